@@ -1,0 +1,7 @@
+#include "CellLocator.hpp"
+
+namespace spoutlab {
+
+CellLocator::~CellLocator() = default;
+
+}  // namespace spoutlab

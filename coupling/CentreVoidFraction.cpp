@@ -1,0 +1,12 @@
+#include "CentreVoidFraction.hpp"
+
+namespace spoutlab {
+
+CentreVoidFraction::CentreVoidFraction(const Parameters& props) : VoidFractionModel(props) {}
+
+void CentreVoidFraction::distribute(const CellLocator&, const Particle&, label centreCell,
+                                    std::vector<CellWeight>& row) const {
+  row.push_back({centreCell, 1.0});
+}
+
+}  // namespace spoutlab
