@@ -1,0 +1,455 @@
+/*---------------------------------------------------------------------------*\
+    SpoutLab: the CFD side of the CFD-DEM coupling.
+\*---------------------------------------------------------------------------*/
+#include "DemCoupling.H"
+
+#include "DemTimeStep.hpp"
+#include "InputError.hpp"
+#include "OStringStream.H"
+
+#include <algorithm>
+#include <iomanip>
+#include <sstream>
+
+namespace spoutlab
+{
+
+namespace
+{
+
+// An OpenFOAM sub-dictionary as the coupling library's Parameters.
+Parameters toParameters(const Foam::dictionary& parent, const Foam::word& name)
+{
+    Parameters params("constant/couplingProperties/" + name);
+    const Foam::dictionary* dict = parent.findDict(name);
+    if (!dict) return params;
+    for (const Foam::entry& e : *dict)
+    {
+        if (e.isDict()) continue;
+        std::string value;
+        const Foam::ITstream& is = e.stream();
+        forAll(is, i)
+        {
+            if (i) value += ' ';
+            const Foam::token& t = is[i];
+            if (t.isStringType())
+            {
+                value += t.stringToken();   // words and strings, unquoted
+            }
+            else
+            {
+                Foam::OStringStream os;
+                os << t;
+                value += os.str();
+            }
+        }
+        params.set(e.keyword(), value);
+    }
+    return params;
+}
+
+
+std::string format(double value)
+{
+    std::ostringstream os;
+    os << std::setprecision(4) << value;
+    return os.str();
+}
+
+
+// Sums over the ranks of the coupled run (one rank when serial).
+void sumOverRanks(int* data, std::size_t n)
+{
+    MPI_Allreduce(MPI_IN_PLACE, data, int(n), MPI_INT, MPI_SUM, MPI_COMM_WORLD);
+}
+
+void sumOverRanks(double* data, std::size_t n)
+{
+    MPI_Allreduce(MPI_IN_PLACE, data, int(n), MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+}
+
+
+std::vector<Vec3> toVec3(const Foam::vectorField& field)
+{
+    std::vector<Vec3> out(field.size());
+    forAll(field, i) out[i] = Vec3{field[i].x(), field[i].y(), field[i].z()};
+    return out;
+}
+
+} // namespace
+
+
+DemCoupling::DemCoupling
+(
+    const Foam::fvMesh& mesh,
+    const Foam::volVectorField& U,
+    const Foam::volScalarField& p,
+    Foam::volScalarField& voidfraction,
+    const Foam::dimensionedScalar& rho,
+    const Foam::dimensionedScalar& mu,
+    const Foam::uniformDimensionedVectorField& g
+)
+:
+    mesh_(mesh),
+    U_(U),
+    p_(p),
+    voidfraction_(voidfraction),
+    gas_{rho.value(), mu.value()},
+    g_{g.value().x(), g.value().y(), g.value().z()},
+    dict_
+    (
+        Foam::IOobject
+        (
+            "couplingProperties", mesh.time().constant(), mesh,
+            Foam::IOobject::MUST_READ, Foam::IOobject::NO_WRITE
+        )
+    ),
+    couplingInterval_(dict_.get<Foam::label>("couplingInterval")),
+    deleteLost_(false),
+    maxCo_(dict_.getOrDefault<Foam::scalar>("maxCo", 1.0)),
+    locator_(mesh),
+    vtk_(mesh.time().path()/"particles", "particles"),
+    Ksl_
+    (
+        Foam::IOobject
+        (
+            "Ksl", mesh.time().timeName(), mesh,
+            Foam::IOobject::NO_READ, Foam::IOobject::AUTO_WRITE
+        ),
+        mesh,
+        Foam::dimensionedScalar(Foam::dimDensity/Foam::dimTime, Foam::Zero)
+    ),
+    Us_
+    (
+        Foam::IOobject
+        (
+            "Us", mesh.time().timeName(), mesh,
+            Foam::IOobject::NO_READ, Foam::IOobject::AUTO_WRITE
+        ),
+        mesh,
+        Foam::dimensionedVector(Foam::dimVelocity, Foam::Zero)
+    )
+{
+    if (couplingInterval_ < 1)
+    {
+        throw InputError
+        (
+            "constant/couplingProperties: key 'couplingInterval' expected a "
+            "positive number of DEM steps per CFD step"
+        );
+    }
+    const Foam::word lost = dict_.getOrDefault<Foam::word>("lostParticles", "stop");
+    if (lost != "stop" && lost != "delete")
+    {
+        throw InputError
+        (
+            "constant/couplingProperties: key 'lostParticles' expected 'stop' "
+            "or 'delete', got '" + lost + "'"
+        );
+    }
+    deleteLost_ = (lost == "delete");
+
+    const Foam::word dragName = dict_.get<Foam::word>("dragModel");
+    exchange_.reset
+    (
+        new MomentumExchange
+        (
+            DragModel::New(dragName, toParameters(dict_, dragName + "Props"))
+        )
+    );
+    const Foam::word vfName = dict_.get<Foam::word>("voidFractionModel");
+    voidFractionModel_ =
+        VoidFractionModel::New(vfName, toParameters(dict_, vfName + "Props"));
+
+    startDem();
+    checkTimeSteps();
+
+    if (Foam::Pstream::master())
+    {
+        const Foam::fileName dir = mesh.time().path()/"postProcessing";
+        Foam::mkDir(dir);
+        const bool fresh = mesh.time().timeIndex() == 0
+                        && mesh.time().value() == mesh.time().startTime().value();
+        log_.reset
+        (
+            new std::ofstream
+            (
+                dir/"coupling.csv",
+                fresh ? std::ios::trunc : std::ios::app
+            )
+        );
+        if (fresh || log_->tellp() == 0)
+        {
+            *log_
+                << "time [s],particles,solid volume [m3],min voidfraction,"
+                << "particle drag x [N],particle drag y [N],particle drag z [N],"
+                << "gas exchange x [N],gas exchange y [N],gas exchange z [N]\n";
+        }
+        // ParaView opens OpenFOAM cases through an empty <case>.foam file
+        const Foam::fileName stub =
+            mesh.time().path()/(mesh.time().caseName() + ".foam");
+        if (!Foam::isFile(stub)) std::ofstream touch(stub);
+    }
+
+    // particles at the start time: map them so the first gas step already
+    // sees the bed, and so the fluid forces exist before the first DEM step
+    const VoidFractionResult vf = mapParticles();
+    exchange(vf);
+    voidfraction_.oldTime() = voidfraction_;
+}
+
+
+void DemCoupling::startDem()
+{
+    const Foam::Time& runTime = mesh_.time();
+    const Foam::fileName caseDir = runTime.path();
+    const Foam::fileName demDir = caseDir/"DEM";
+    if (Foam::Pstream::master()) Foam::mkDir(demDir);
+
+    std::map<std::string, std::string> vars;
+    vars["case"] = caseDir;
+    vars["dem"] = demDir;
+    if (const Foam::dictionary* user = dict_.findDict("liggghtsVariables"))
+    {
+        Parameters params = toParameters(dict_, "liggghtsVariables");
+        for (const Foam::word& key : user->toc()) vars[key] = params.getWord(key);
+    }
+    if (runTime.value() > 0)
+    {
+        const Foam::fileName restart =
+            demDir/("restart_" + runTime.timeName() + ".liggghts");
+        if (!Foam::isFile(restart))
+        {
+            throw InputError
+            (
+                "restart at t = " + runTime.timeName()
+              + " s needs the LIGGGHTS restart '" + restart + "' (missing)"
+            );
+        }
+        vars["restart"] = restart;
+    }
+
+    Foam::fileName input = dict_.get<Foam::fileName>("liggghtsInput");
+    input.expand();
+    if (!input.isAbsolute()) input = caseDir/input;
+
+    dem_.reset
+    (
+        new LiggghtsDem(input, vars, caseDir/"log.liggghts", MPI_COMM_WORLD)
+    );
+    Foam::Info<< "LIGGGHTS: " << dem_->nParticles() << " particles from "
+        << input << ", DEM time step " << dem_->timeStep() << " s" << Foam::endl;
+}
+
+
+void DemCoupling::checkTimeSteps() const
+{
+    const double dtDem = dem_->timeStep();
+    const double dtCfd = mesh_.time().deltaTValue();
+    if (std::abs(dtCfd - couplingInterval_*dtDem) > 1e-9*dtCfd)
+    {
+        throw InputError
+        (
+            "system/controlDict: key 'deltaT' expected couplingInterval ("
+          + std::to_string(couplingInterval_) + ") x LIGGGHTS time step ("
+          + format(dtDem) + " s) = " + format(couplingInterval_*dtDem)
+          + " s, got " + format(dtCfd) + " s"
+        );
+    }
+
+    const double k = dem_->maxNormalStiffness();
+    const double m = dem_->minParticleMass();
+    if (k > 0 && dem_->nParticles() > 0)
+    {
+        const double limit = demTimeStepLimit(m, k);
+        if (dtDem > limit)
+        {
+            throw InputError
+            (
+                "LIGGGHTS input: DEM time step " + format(dtDem)
+              + " s exceeds the limit of eq 11, pi*sqrt(m/k)/5 = "
+              + format(limit) + " s (lightest particle m = " + format(m)
+              + " kg, largest k_n = " + format(k) + " N/m)"
+            );
+        }
+    }
+}
+
+
+VoidFractionResult DemCoupling::mapParticles()
+{
+    dem_->gather(particles_);
+    VoidFractionResult vf = voidFractionModel_->compute(locator_, particles_);
+
+    // A particle is lost only if no processor found its centre.
+    std::vector<int> found(particles_.size());
+    for (std::size_t i = 0; i < particles_.size(); ++i)
+    {
+        found[i] = vf.centreCell[i] >= 0 ? 1 : 0;
+    }
+    sumOverRanks(found.data(), found.size());
+
+    std::vector<long> lostIds;
+    for (std::size_t i = 0; i < particles_.size(); ++i)
+    {
+        if (!found[i]) lostIds.push_back(particles_[i].id);
+    }
+    if (!lostIds.empty())
+    {
+        std::string ids;
+        for (std::size_t k = 0; k < lostIds.size() && k < 20; ++k)
+        {
+            ids += (k ? ", " : "") + std::to_string(lostIds[k]);
+        }
+        if (lostIds.size() > 20) ids += ", ...";
+        const std::string what =
+            std::to_string(lostIds.size()) + " particle(s) outside the CFD mesh at t = "
+          + mesh_.time().timeName() + " s (ids " + ids + ")";
+        if (!deleteLost_)
+        {
+            throw InputError
+            (
+                what + "; set 'lostParticles delete' in "
+                "constant/couplingProperties to remove them instead"
+            );
+        }
+        Foam::Info<< "spoutFoam: deleting " << what.c_str() << Foam::endl;
+        dem_->deleteParticles(lostIds);
+        dem_->gather(particles_);
+        vf = voidFractionModel_->compute(locator_, particles_);
+    }
+
+    const std::vector<double> eps =
+        voidFractionModel_->voidFraction(locator_, vf.solidVolume);
+    Foam::scalarField& field = voidfraction_.primitiveFieldRef();
+    forAll(field, celli) field[celli] = eps[celli];
+    voidfraction_.correctBoundaryConditions();
+    return vf;
+}
+
+
+void DemCoupling::exchange(const VoidFractionResult& vf)
+{
+    const std::vector<Vec3> U = toVec3(U_.primitiveField());
+    const Foam::volVectorField gradP(Foam::fvc::grad(p_));
+    const std::vector<Vec3> gradPv = toVec3(gradP.primitiveField());
+    const std::vector<double> eps
+    (
+        voidfraction_.primitiveField().begin(), voidfraction_.primitiveField().end()
+    );
+    const ExchangeResult ex = exchange_->compute
+    (
+        locator_, particles_, vf, GasCellFields{U, gradPv, eps}, gas_, g_
+    );
+
+    forAll(Ksl_, celli)
+    {
+        Ksl_[celli] = ex.beta[celli];
+        const Vec3& us = ex.Us[celli];
+        Us_[celli] = Foam::vector(us.x, us.y, us.z);
+    }
+    Ksl_.correctBoundaryConditions();
+    Us_.correctBoundaryConditions();
+
+    fluidForce_ = ex.totalForce;
+    dem_->setFluidForces(fluidForce_);
+    if (Foam::Pstream::parRun())
+    {
+        // every rank now holds the summed force of every particle
+        std::vector<double> f(3*fluidForce_.size());
+        for (std::size_t i = 0; i < fluidForce_.size(); ++i)
+        {
+            f[3*i] = fluidForce_[i].x;
+            f[3*i + 1] = fluidForce_[i].y;
+            f[3*i + 2] = fluidForce_[i].z;
+        }
+        sumOverRanks(f.data(), f.size());
+        for (std::size_t i = 0; i < fluidForce_.size(); ++i)
+        {
+            fluidForce_[i] = Vec3{f[3*i], f[3*i + 1], f[3*i + 2]};
+        }
+    }
+    logStep(vf, ex);
+}
+
+
+void DemCoupling::logStep(const VoidFractionResult& vf, const ExchangeResult& ex)
+{
+    double solid = 0;
+    for (double s : vf.solidVolume) solid += s;
+    Vec3 drag, gas;
+    for (const Vec3& f : ex.dragForce) drag += f;
+    forAll(Ksl_, celli)
+    {
+        const Vec3& u = Vec3{U_[celli].x(), U_[celli].y(), U_[celli].z()};
+        gas += ex.beta[celli]*mesh_.V()[celli]*(u - ex.Us[celli]);
+    }
+    double sums[7] = {solid, drag.x, drag.y, drag.z, gas.x, gas.y, gas.z};
+    sumOverRanks(sums, 7);
+    const double epsMin = Foam::gMin(voidfraction_.primitiveField());
+
+    Foam::Info<< "Coupling: " << label(particles_.size()) << " particles, "
+        << "min voidfraction " << epsMin
+        << ", drag on particles (" << sums[1] << ' ' << sums[2] << ' '
+        << sums[3] << ") N" << Foam::endl;
+    if (log_)
+    {
+        *log_ << std::setprecision(10) << mesh_.time().value() << ','
+              << particles_.size() << ',' << sums[0] << ',' << epsMin;
+        for (int k = 1; k < 7; ++k) *log_ << ',' << sums[k];
+        *log_ << '\n';
+        log_->flush();
+    }
+}
+
+
+void DemCoupling::evolve()
+{
+    dem_->run(couplingInterval_);
+    const VoidFractionResult vf = mapParticles();
+    exchange(vf);
+}
+
+
+void DemCoupling::checkCourant(const Foam::surfaceScalarField& phiU) const
+{
+    const Foam::scalarField sumPhi
+    (
+        Foam::fvc::surfaceSum(Foam::mag(phiU))().primitiveField()
+    );
+    const Foam::scalar Co =
+        0.5*Foam::gMax(sumPhi/mesh_.V().field())*mesh_.time().deltaTValue();
+    Foam::Info<< "Courant number (interstitial) max: " << Co << Foam::endl;
+    if (Co > maxCo_)
+    {
+        throw InputError
+        (
+            "gas Courant number " + format(Co) + " at t = "
+          + mesh_.time().timeName() + " s exceeds maxCo " + format(maxCo_)
+          + " (constant/couplingProperties); reduce deltaT and couplingInterval"
+        );
+    }
+}
+
+
+void DemCoupling::write()
+{
+    const Foam::Time& runTime = mesh_.time();
+    if (!runTime.writeTime()) return;
+
+    if (Foam::Pstream::master())
+    {
+        vtk_.write(runTime.value(), runTime.timeName(), particles_, fluidForce_);
+    }
+    const Foam::fileName restart =
+        runTime.path()/"DEM"/("restart_" + runTime.timeName() + ".liggghts");
+    dem_->command("write_restart " + restart);
+}
+
+
+void DemCoupling::finish()
+{
+    if (log_) log_->flush();
+}
+
+} // namespace spoutlab

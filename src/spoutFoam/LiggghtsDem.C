@@ -1,0 +1,330 @@
+/*---------------------------------------------------------------------------*\
+    SpoutLab: the in-process LIGGGHTS instance owned by spoutFoam.
+\*---------------------------------------------------------------------------*/
+#include "LiggghtsDem.H"
+
+#include "InputError.hpp"
+
+#include "atom.h"
+#include "fix_property_atom.h"
+#include "fix_property_global.h"
+#include "input.h"
+#include "lammps.h"
+#include "modify.h"
+#include "update.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+
+namespace spoutlab
+{
+
+namespace
+{
+
+// LIGGGHTS stops the whole program with exit(1) on an error and writes the
+// reason only to its log.  Remember what we asked it to do and, if it stops,
+// repeat its ERROR line on stderr so the user sees one clear line.
+std::string liggghtsActivity;
+std::string liggghtsLog;
+
+void reportLiggghtsStop()
+{
+    if (liggghtsActivity.empty()) return;
+    std::string reason = "see " + liggghtsLog;
+    std::ifstream log(liggghtsLog);
+    for (std::string line; std::getline(log, line);)
+    {
+        if (line.rfind("ERROR", 0) == 0) reason = line;
+    }
+    std::cerr << "spoutFoam: LIGGGHTS stopped while " << liggghtsActivity
+              << ": " << reason << std::endl;
+}
+
+class Activity
+{
+public:
+    explicit Activity(const std::string& what) { liggghtsActivity = what; }
+    ~Activity() { liggghtsActivity.clear(); }
+};
+
+bool readable(const std::string& path)
+{
+    std::ifstream f(path);
+    return f.good();
+}
+
+} // namespace
+
+
+LiggghtsDem::LiggghtsDem
+(
+    const std::string& inputFile,
+    const std::map<std::string, std::string>& variables,
+    const std::string& logFile,
+    MPI_Comm comm
+)
+:
+    lmp_(nullptr),
+    dragForce_(nullptr),
+    comm_(comm),
+    setupDone_(false),
+    stepsRun_(0)
+{
+    if (!readable(inputFile))
+    {
+        throw InputError
+        (
+            "LIGGGHTS input '" + inputFile + "' cannot be read (missing file?)"
+        );
+    }
+
+    // LIGGGHTS 3.8.0 writes to its screen unconditionally in places (crash
+    // with -screen none), so its screen output goes to the log file
+    std::vector<std::string> args =
+        {"liggghts", "-log", "none", "-screen", logFile, "-echo", "none"};
+    for (const auto& v : variables)
+    {
+        args.insert(args.end(), {"-var", v.first, v.second});
+    }
+    std::vector<char*> argv;
+    for (auto& a : args) argv.push_back(&a[0]);
+
+    static bool registered = false;
+    if (!registered)
+    {
+        std::atexit(reportLiggghtsStop);
+        registered = true;
+    }
+    liggghtsLog = logFile;
+
+    {
+        Activity doing("reading input '" + inputFile + "'");
+        lmp_ = new LAMMPS_NS::LAMMPS(int(argv.size()), argv.data(), comm);
+        lmp_->input->file(inputFile.c_str());
+    }
+    findCouplingFixes(inputFile);
+}
+
+
+LiggghtsDem::~LiggghtsDem()
+{
+    delete lmp_;
+}
+
+
+void LiggghtsDem::findCouplingFixes(const std::string& inputFile)
+{
+    using namespace LAMMPS_NS;
+    dragForce_ = static_cast<FixPropertyAtom*>
+    (
+        lmp_->modify->find_fix_property
+        (
+            "dragforce", "property/atom", "vector", 0, 0, "spoutFoam", false
+        )
+    );
+    if (!dragForce_ || !lmp_->modify->find_fix_style_strict("couple/cfd", 0))
+    {
+        throw InputError
+        (
+            "LIGGGHTS input '" + inputFile + "': expected the coupling fixes "
+            "'fix ID all couple/cfd couple_every 0 mpi' and "
+            "'fix ID all couple/cfd/force'"
+        );
+    }
+    if (lmp_->atom->radius == nullptr || lmp_->atom->rmass == nullptr)
+    {
+        throw InputError
+        (
+            "LIGGGHTS input '" + inputFile
+          + "': expected 'atom_style granular' (spheres with radius and mass)"
+        );
+    }
+}
+
+
+void LiggghtsDem::run(int nSteps)
+{
+    Activity doing("running " + std::to_string(nSteps) + " DEM steps");
+    const std::string cmd =
+        "run " + std::to_string(nSteps)
+      + (setupDone_ ? " pre no post no" : " post no");
+    lmp_->input->one(cmd.c_str());
+    setupDone_ = true;
+    stepsRun_ += nSteps;
+}
+
+
+double LiggghtsDem::timeStep() const
+{
+    return lmp_->update->dt;
+}
+
+
+double LiggghtsDem::time() const
+{
+    return stepsRun_*timeStep();
+}
+
+
+long LiggghtsDem::step() const
+{
+    return stepsRun_;
+}
+
+
+void LiggghtsDem::gather(std::vector<Particle>& particles) const
+{
+    const auto* atom = lmp_->atom;
+    const int nLocal = atom->nlocal;
+    constexpr int width = 8;   // id, x(3), v(3), radius
+
+    std::vector<double> local(std::size_t(nLocal)*width);
+    for (int i = 0; i < nLocal; ++i)
+    {
+        double* row = &local[std::size_t(i)*width];
+        row[0] = atom->tag[i];
+        for (int d = 0; d < 3; ++d)
+        {
+            row[1 + d] = atom->x[i][d];
+            row[4 + d] = atom->v[i][d];
+        }
+        row[7] = atom->radius[i];
+    }
+
+    int nProcs = 1;
+    MPI_Comm_size(comm_, &nProcs);
+    std::vector<int> counts(nProcs), offsets(nProcs, 0);
+    int myCount = int(local.size());
+    MPI_Allgather(&myCount, 1, MPI_INT, counts.data(), 1, MPI_INT, comm_);
+    for (int p = 1; p < nProcs; ++p) offsets[p] = offsets[p-1] + counts[p-1];
+    std::vector<double> all(std::size_t(offsets.back() + counts.back()));
+    MPI_Allgatherv
+    (
+        local.data(), myCount, MPI_DOUBLE,
+        all.data(), counts.data(), offsets.data(), MPI_DOUBLE, comm_
+    );
+
+    const std::size_t n = all.size()/width;
+    particles.resize(n);
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        const double* row = &all[i*width];
+        Particle& p = particles[i];
+        p.id = long(row[0]);
+        p.x = Vec3{row[1], row[2], row[3]};
+        p.v = Vec3{row[4], row[5], row[6]};
+        p.radius = row[7];
+    }
+    std::sort
+    (
+        particles.begin(), particles.end(),
+        [](const Particle& a, const Particle& b) { return a.id < b.id; }
+    );
+
+    auto& ids = const_cast<std::vector<long>&>(gatheredIds_);
+    ids.resize(n);
+    for (std::size_t i = 0; i < n; ++i) ids[i] = particles[i].id;
+}
+
+
+void LiggghtsDem::setFluidForces(const std::vector<Vec3>& forces)
+{
+    if (forces.size() != gatheredIds_.size())
+    {
+        throw std::logic_error("setFluidForces: force count differs from gather");
+    }
+    std::vector<double> summed(3*forces.size());
+    for (std::size_t i = 0; i < forces.size(); ++i)
+    {
+        summed[3*i] = forces[i].x;
+        summed[3*i + 1] = forces[i].y;
+        summed[3*i + 2] = forces[i].z;
+    }
+    MPI_Allreduce
+    (
+        MPI_IN_PLACE, summed.data(), int(summed.size()), MPI_DOUBLE, MPI_SUM,
+        comm_
+    );
+
+    const auto* atom = lmp_->atom;
+    double** drag = dragForce_->array_atom;
+    for (int i = 0; i < atom->nlocal; ++i)
+    {
+        const auto it = std::lower_bound
+        (
+            gatheredIds_.begin(), gatheredIds_.end(), long(atom->tag[i])
+        );
+        const std::size_t k = std::size_t(it - gatheredIds_.begin());
+        for (int d = 0; d < 3; ++d) drag[i][d] = summed[3*k + d];
+    }
+}
+
+
+void LiggghtsDem::deleteParticles(const std::vector<long>& ids)
+{
+    if (ids.empty()) return;
+    Activity doing("deleting particles outside the CFD mesh");
+    std::string group = "group spoutFoamLost id";
+    for (long id : ids) group += " " + std::to_string(id);
+    command(group);
+    command("delete_atoms group spoutFoamLost");
+    command("group spoutFoamLost delete");
+    setupDone_ = false;
+}
+
+
+long LiggghtsDem::nParticles() const
+{
+    long n = lmp_->atom->nlocal;
+    MPI_Allreduce(MPI_IN_PLACE, &n, 1, MPI_LONG, MPI_SUM, comm_);
+    return n;
+}
+
+
+double LiggghtsDem::minParticleMass() const
+{
+    double mMin = 1e300;
+    for (int i = 0; i < lmp_->atom->nlocal; ++i)
+    {
+        mMin = std::min(mMin, lmp_->atom->rmass[i]);
+    }
+    MPI_Allreduce(MPI_IN_PLACE, &mMin, 1, MPI_DOUBLE, MPI_MIN, comm_);
+    return mMin;
+}
+
+
+double LiggghtsDem::maxNormalStiffness() const
+{
+    using namespace LAMMPS_NS;
+    auto* kn = static_cast<FixPropertyGlobal*>
+    (
+        lmp_->modify->find_fix_property
+        (
+            "kn", "property/global", "peratomtypepair", 0, 0, "spoutFoam", false
+        )
+    );
+    if (!kn) return 0;
+    // peratomtypepair: an ntypes x ntypes matrix
+    const int nTypes = lmp_->atom->ntypes;
+    double kMax = 0;
+    for (int i = 0; i < nTypes; ++i)
+    {
+        for (int j = 0; j < nTypes; ++j)
+        {
+            kMax = std::max(kMax, kn->compute_array(i, j));
+        }
+    }
+    return kMax;
+}
+
+
+void LiggghtsDem::command(const std::string& cmd)
+{
+    lmp_->input->one(cmd.c_str());
+}
+
+} // namespace spoutlab

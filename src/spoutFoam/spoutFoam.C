@@ -1,0 +1,94 @@
+/*---------------------------------------------------------------------------*\
+Application
+    spoutFoam
+
+Description
+    CFD-DEM solver for dense gas-particle flows (spouted and fluidised beds).
+    The gas is the volume-averaged incompressible phase of Tsuji's "model A"
+    solved with PISO; the particles are an in-process LIGGGHTS instance.
+    Each time step: LIGGGHTS advances couplingInterval steps with the fluid
+    force of the last exchange; particles are located, the void fraction,
+    the cell-averaged particle velocity Us and the exchange coefficient Ksl
+    (beta) are computed; the fluid forces go back to LIGGGHTS; then the gas
+    is solved with beta*(Us - U) implicit in U.  Settings are in
+    constant/couplingProperties.
+\*---------------------------------------------------------------------------*/
+
+#include "fvCFD.H"
+#include "pisoControl.H"
+#include "fixedFluxPressureFvPatchScalarField.H"
+#include "uniformDimensionedFields.H"
+
+#include "DemCoupling.H"
+#include "InputError.hpp"
+
+#include <mpi.h>
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "CFD-DEM solver: volume-averaged gas (model A, PISO) coupled to an"
+        " in-process LIGGGHTS; see constant/couplingProperties"
+    );
+
+    #include "postProcess.H"
+
+    #include "setRootCaseLists.H"
+    #include "createTime.H"
+    #include "createMesh.H"
+
+    // LIGGGHTS needs MPI even when the case runs serial (OpenFOAM only
+    // starts MPI with -parallel).
+    int mpiStarted = 0;
+    MPI_Initialized(&mpiStarted);
+    const bool ownMpi = !mpiStarted;
+    if (ownMpi) MPI_Init(&argc, &argv);
+
+    int status = 0;
+    try
+    {
+        pisoControl piso(mesh);
+
+        #include "createFields.H"
+
+        spoutlab::DemCoupling coupling(mesh, U, p, voidfraction, rho, mu, g);
+
+        Info<< "\nStarting time loop\n" << endl;
+
+        while (runTime.loop())
+        {
+            Info<< "Time = " << runTime.timeName() << nl << endl;
+
+            coupling.evolve();
+
+            while (piso.correct())
+            {
+                #include "UEqn.H"
+                #include "pEqn.H"
+            }
+
+            coupling.checkCourant(phiU);
+            runTime.write();
+            coupling.write();
+
+            runTime.printExecutionTime(Info);
+        }
+        coupling.finish();
+        Info<< "End\n" << endl;
+    }
+    catch (const spoutlab::InputError& err)
+    {
+        if (Pstream::master())
+        {
+            std::cerr << "spoutFoam: " << err.what() << std::endl;
+        }
+        status = 1;
+    }
+
+    if (ownMpi)
+    {
+        MPI_Finalize();
+    }
+    return status;
+}
