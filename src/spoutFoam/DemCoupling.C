@@ -181,7 +181,8 @@ DemCoupling::DemCoupling
         if (fresh || log_->tellp() == 0)
         {
             *log_
-                << "time [s],particles,solid volume [m3],min voidfraction,"
+                << "time [s],particles,particle mass [kg],solid volume [m3],"
+                << "min voidfraction,"
                 << "particle drag x [N],particle drag y [N],particle drag z [N],"
                 << "gas exchange x [N],gas exchange y [N],gas exchange z [N]\n";
         }
@@ -196,6 +197,13 @@ DemCoupling::DemCoupling
     const VoidFractionResult vf = mapParticles();
     exchange(vf);
     voidfraction_.oldTime() = voidfraction_;
+    if (Foam::Pstream::master())
+    {
+        vtk_.write
+        (
+            mesh.time().value(), mesh.time().timeName(), particles_, fluidForce_
+        );
+    }
 }
 
 
@@ -385,6 +393,7 @@ void DemCoupling::logStep(const VoidFractionResult& vf, const ExchangeResult& ex
         gas += ex.beta[celli]*mesh_.V()[celli]*(u - ex.Us[celli]);
     }
     double sums[7] = {solid, drag.x, drag.y, drag.z, gas.x, gas.y, gas.z};
+    const double mass = dem_->totalMass();
     sumOverRanks(sums, 7);
     const double epsMin = Foam::gMin(voidfraction_.primitiveField());
 
@@ -395,7 +404,8 @@ void DemCoupling::logStep(const VoidFractionResult& vf, const ExchangeResult& ex
     if (log_)
     {
         *log_ << std::setprecision(10) << mesh_.time().value() << ','
-              << particles_.size() << ',' << sums[0] << ',' << epsMin;
+              << particles_.size() << ',' << mass << ',' << sums[0] << ','
+              << epsMin;
         for (int k = 1; k < 7; ++k) *log_ << ',' << sums[k];
         *log_ << '\n';
         log_->flush();

@@ -285,6 +285,15 @@ long LiggghtsDem::nParticles() const
 }
 
 
+double LiggghtsDem::totalMass() const
+{
+    double m = 0;
+    for (int i = 0; i < lmp_->atom->nlocal; ++i) m += lmp_->atom->rmass[i];
+    MPI_Allreduce(MPI_IN_PLACE, &m, 1, MPI_DOUBLE, MPI_SUM, comm_);
+    return m;
+}
+
+
 double LiggghtsDem::minParticleMass() const
 {
     double mMin = 1e300;

@@ -1,0 +1,123 @@
+"""Helpers for the case evaluate scripts: read what spoutFoam and OpenFOAM
+function objects write, draw PNG plots with gnuplot, and report checks.
+
+Standard library only, so a fresh machine needs nothing beyond python3.
+"""
+import csv
+import math
+import os
+import re
+import subprocess
+import sys
+
+
+def read_dat(path):
+    """An OpenFOAM function-object .dat file: (header dict, rows of floats).
+
+    Vector entries like '(1 2 3)' become three numbers in the row."""
+    header, rows = {}, []
+    with open(path) as f:
+        for line in f:
+            if line.startswith('#'):
+                m = re.match(r'#\s*([^:]+?)\s*:\s*(.*)', line)
+                if m:
+                    header[m.group(1)] = m.group(2).strip()
+                continue
+            numbers = line.replace('(', ' ').replace(')', ' ').split()
+            if numbers:
+                rows.append([float(x) for x in numbers])
+    return header, rows
+
+
+def function_object_file(case, name, filename):
+    """The newest <case>/postProcessing/<name>/<time>/<filename>; restarts
+    write a new time directory, so rows from all of them are joined."""
+    base = os.path.join(case, 'postProcessing', name)
+    times = sorted(os.listdir(base), key=float)
+    return [os.path.join(base, t, filename) for t in times]
+
+
+def read_function_object(case, name, filename):
+    header, rows = {}, []
+    for path in function_object_file(case, name, filename):
+        h, r = read_dat(path)
+        header.update(h)
+        if rows and r:
+            rows = [row for row in rows if row[0] < r[0][0]]
+        rows.extend(r)
+    return header, rows
+
+
+def read_coupling_log(case):
+    """postProcessing/coupling.csv written by spoutFoam, as a list of dicts."""
+    with open(os.path.join(case, 'postProcessing', 'coupling.csv')) as f:
+        return [{k: float(v) for k, v in row.items()} for row in csv.DictReader(f)]
+
+
+def read_vtp_points(path):
+    """Particle positions from a spoutFoam .vtp file (ASCII)."""
+    text = open(path).read()
+    block = re.search(r'<Points>.*?>(.*?)</DataArray>', text, re.S).group(1)
+    values = [float(x) for x in block.split()]
+    return [tuple(values[i:i + 3]) for i in range(0, len(values), 3)]
+
+
+def read_vtp_array(path, name):
+    text = open(path).read()
+    m = re.search(r'Name="%s"[^>]*>(.*?)</DataArray>' % re.escape(name), text, re.S)
+    return [float(x) for x in m.group(1).split()]
+
+
+def plot(png, script):
+    """Run a gnuplot script that draws into png (pngcairo, or png if absent)."""
+    terminal = 'set terminal pngcairo size 900,600 font "Sans,11"\n'
+    full = terminal + 'set output "%s"\n' % png + script
+    result = subprocess.run(['gnuplot'], input=full, text=True,
+                            capture_output=True)
+    if result.returncode != 0 or not os.path.isfile(png):
+        full = 'set terminal png size 900,600\nset output "%s"\n' % png + script
+        subprocess.run(['gnuplot'], input=full, text=True, check=True)
+
+
+class Checks:
+    """Collects (name, value, reference, tolerance) checks, prints a table,
+    writes results.txt and gives the exit status."""
+
+    def __init__(self, title):
+        self.title = title
+        self.rows = []
+        self.notes = []
+
+    def relative(self, name, value, reference, tolerance, unit=''):
+        error = abs(value - reference) / abs(reference)
+        self.rows.append((name, value, reference, error, tolerance, unit))
+        return error <= tolerance
+
+    def note(self, text):
+        self.notes.append(text)
+
+    def report(self, path='results.txt'):
+        lines = [self.title, '']
+        lines.append('%-44s %12s %12s %9s %9s  %s' %
+                     ('quantity', 'SpoutLab', 'reference', 'error', 'limit', 'result'))
+        ok = True
+        for name, value, reference, error, tolerance, unit in self.rows:
+            passed = error <= tolerance
+            ok = ok and passed
+            label = name + (' [%s]' % unit if unit else '')
+            lines.append('%-44s %12.5g %12.5g %8.2f%% %8.1f%%  %s' %
+                         (label, value, reference, 100 * error, 100 * tolerance,
+                          'PASS' if passed else 'FAIL'))
+        if self.notes:
+            lines.append('')
+            lines.extend(self.notes)
+        text = '\n'.join(lines) + '\n'
+        sys.stdout.write(text)
+        with open(path, 'w') as f:
+            f.write(text)
+        return 0 if ok else 1
+
+
+def solve_quadratic_positive(a, b, c):
+    """Positive root of a x^2 + b x + c = 0 (a > 0, c < 0)."""
+    return (-b + math.sqrt(b * b - 4 * a * c)) / (2 * a)
