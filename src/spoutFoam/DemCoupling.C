@@ -69,6 +69,25 @@ void sumOverRanks(double* data, std::size_t n)
 }
 
 
+// A run-time selected model name must be one the library knows.
+void requireKnown
+(
+    const std::string& key,
+    const std::string& name,
+    const std::vector<std::string>& known
+)
+{
+    if (std::find(known.begin(), known.end(), name) != known.end()) return;
+    std::string list;
+    for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
+    throw InputError
+    (
+        "constant/couplingProperties: key '" + key + "' expected one of "
+      + list + ", got '" + name + "'"
+    );
+}
+
+
 std::vector<Vec3> toVec3(const Foam::vectorField& field)
 {
     std::vector<Vec3> out(field.size());
@@ -150,6 +169,7 @@ DemCoupling::DemCoupling
     deleteLost_ = (lost == "delete");
 
     const Foam::word dragName = dict_.get<Foam::word>("dragModel");
+    requireKnown("dragModel", dragName, DragModel::available());
     exchange_.reset
     (
         new MomentumExchange
@@ -158,6 +178,7 @@ DemCoupling::DemCoupling
         )
     );
     const Foam::word vfName = dict_.get<Foam::word>("voidFractionModel");
+    requireKnown("voidFractionModel", vfName, VoidFractionModel::available());
     voidFractionModel_ =
         VoidFractionModel::New(vfName, toParameters(dict_, vfName + "Props"));
 
@@ -241,6 +262,7 @@ void DemCoupling::startDem()
     input.expand();
     if (!input.isAbsolute()) input = caseDir/input;
 
+    liggghtsInput_ = input;
     dem_.reset
     (
         new LiggghtsDem(input, vars, caseDir/"log.liggghts", MPI_COMM_WORLD)
@@ -274,7 +296,8 @@ void DemCoupling::checkTimeSteps() const
         {
             throw InputError
             (
-                "LIGGGHTS input: DEM time step " + format(dtDem)
+                "LIGGGHTS input '" + liggghtsInput_ + "': DEM time step "
+              + format(dtDem)
               + " s exceeds the limit of eq 11, pi*sqrt(m/k)/5 = "
               + format(limit) + " s (lightest particle m = " + format(m)
               + " kg, largest k_n = " + format(k) + " N/m)"

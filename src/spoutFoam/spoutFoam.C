@@ -86,9 +86,19 @@ int main(int argc, char *argv[])
         status = 1;
     }
 
+    // argList's destructor ends the process with status 0, so a failure
+    // must leave here
+    if (status != 0 && Pstream::parRun())
+    {
+        Foam::UPstream::exit(status);
+    }
     if (ownMpi)
     {
         MPI_Finalize();
     }
-    return status;
+    if (status != 0)
+    {
+        std::exit(status);
+    }
+    return 0;
 }
