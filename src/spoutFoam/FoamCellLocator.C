@@ -43,7 +43,30 @@ label FoamCellLocator::findCell(const Vec3& q, label hint) const
             if (inside(p, nbr)) return nbr;
         }
     }
-    return search_.findCell(p, -1, true);
+    const label cell = search_.findCell(p, -1, true);
+    if (cell >= 0) return cell;
+    // The octree may miss a point lying exactly on a boundary face; the
+    // nearest cell's own (inclusive) face-plane test settles it.
+    // The octree may miss a point lying on a boundary face to within
+    // round-off; accept the nearest cell if the point is that close to it.
+    const label nearest = search_.findNearestCell(p, -1, true);
+    if (nearest < 0) return -1;
+    const double tolerance = 1e-9*std::cbrt(mesh_.V()[nearest]);
+    return depthInside(p, nearest) >= -tolerance ? nearest : -1;
+}
+
+
+double FoamCellLocator::depthInside(const Foam::point& p, label cell) const
+{
+    double depth = 1e300;
+    for (const Foam::label facei : mesh_.cells()[cell])
+    {
+        Foam::vector n = mesh_.faceAreas()[facei];
+        n /= Foam::mag(n);
+        if (mesh_.faceOwner()[facei] != cell) n = -n;   // make it outward
+        depth = std::min(depth, double((mesh_.faceCentres()[facei] - p) & n));
+    }
+    return depth;
 }
 
 
@@ -52,17 +75,7 @@ bool FoamCellLocator::sphereInsideCell
     label cell, const Vec3& c, double radius
 ) const
 {
-    const Foam::point centre(c.x, c.y, c.z);
-    const Foam::labelList& faces = mesh_.cells()[cell];
-    for (const Foam::label facei : faces)
-    {
-        Foam::vector n = mesh_.faceAreas()[facei];
-        n /= Foam::mag(n);
-        if (mesh_.faceOwner()[facei] != cell) n = -n;   // make it outward
-        const double distance = (mesh_.faceCentres()[facei] - centre) & n;
-        if (distance < radius) return false;
-    }
-    return true;
+    return depthInside(Foam::point(c.x, c.y, c.z), cell) >= radius;
 }
 
 } // namespace spoutlab
