@@ -127,7 +127,7 @@ DemCoupling::DemCoupling
     deleteLost_(false),
     maxCo_(dict_.getOrDefault<Foam::scalar>("maxCo", 1.0)),
     locator_(mesh),
-    vtk_(mesh.time().path()/"particles", "particles"),
+    vtk_(mesh.time().globalPath()/"particles", "particles"),
     Ksl_
     (
         Foam::IOobject
@@ -187,7 +187,7 @@ DemCoupling::DemCoupling
 
     if (Foam::Pstream::master())
     {
-        const Foam::fileName dir = mesh.time().path()/"postProcessing";
+        const Foam::fileName dir = mesh.time().globalPath()/"postProcessing";
         Foam::mkDir(dir);
         const bool fresh = mesh.time().timeIndex() == 0
                         && mesh.time().value() == mesh.time().startTime().value();
@@ -209,7 +209,7 @@ DemCoupling::DemCoupling
         }
         // ParaView opens OpenFOAM cases through an empty <case>.foam file
         const Foam::fileName stub =
-            mesh.time().path()/(mesh.time().caseName() + ".foam");
+            mesh.time().globalPath()/(mesh.time().globalCaseName() + ".foam");
         if (!Foam::isFile(stub)) std::ofstream touch(stub);
     }
 
@@ -231,7 +231,7 @@ DemCoupling::DemCoupling
 void DemCoupling::startDem()
 {
     const Foam::Time& runTime = mesh_.time();
-    const Foam::fileName caseDir = runTime.path();
+    const Foam::fileName caseDir = runTime.globalPath();
     const Foam::fileName demDir = caseDir/"DEM";
     if (Foam::Pstream::master()) Foam::mkDir(demDir);
 
@@ -475,7 +475,7 @@ void DemCoupling::write()
         vtk_.write(runTime.value(), runTime.timeName(), particles_, fluidForce_);
     }
     const Foam::fileName restart =
-        runTime.path()/"DEM"/("restart_" + runTime.timeName() + ".liggghts");
+        runTime.globalPath()/"DEM"/("restart_" + runTime.timeName() + ".liggghts");
     dem_->command("write_restart " + restart);
 }
 
