@@ -1,0 +1,14 @@
+#pragma once
+// PNG plots through gnuplot (Debian's gnuplot-nox): the caller writes the
+// data as CSV and a gnuplot script body; this adds the terminal and output.
+#include <string>
+
+namespace procsim
+{
+
+// Returns false (and prints a warning) if gnuplot is missing or fails;
+// plots are a convenience, the CSV is the result.
+bool plotPng(const std::string& png, const std::string& gnuplotScript,
+             int width = 900, int height = 600);
+
+} // namespace procsim
