@@ -292,7 +292,7 @@ void DemCoupling::checkTimeSteps() const
     if (k > 0 && dem_->nParticles() > 0)
     {
         const double limit = demTimeStepLimit(m, k);
-        if (dtDem > limit)
+        if (dtDem > limit*(1 + 1e-9))   // round-off: dt exactly at the limit is fine
         {
             throw InputError
             (
