@@ -1,0 +1,339 @@
+#include "kinetics/Case.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+
+namespace procsim::kinetics
+{
+
+namespace
+{
+
+std::vector<std::string> splitDots(const std::string& key)
+{
+    std::vector<std::string> parts;
+    std::stringstream ss(key);
+    std::string p;
+    while (std::getline(ss, p, '.')) parts.push_back(p);
+    return parts;
+}
+
+void applyYamlOverride(YAML::Node& root, const std::string& file, const std::string& key, double value)
+{
+    const auto parts = splitDots(key);
+    YAML::Node cur;
+    cur.reset(root);
+    for (std::size_t i = 0; i + 1 < parts.size(); ++i)
+    {
+        if (!cur.IsMap() || !cur[parts[i]] || !cur[parts[i]].IsMap())
+        {
+            throw InputError(file + ": cannot set '" + key + "': section '" + parts[i]
+                             + "' is not in the case file");
+        }
+        YAML::Node next = cur[parts[i]];
+        cur.reset(next);
+    }
+    if (!cur.IsMap()) throw InputError(file + ": cannot set '" + key + "'");
+    const std::string last = parts.back();
+    if (cur[last] && !cur[last].IsScalar())
+    {
+        throw InputError(file + ": cannot set '" + key + "': it is a section, not a number");
+    }
+    std::ostringstream os;
+    os.precision(17);
+    os << value;
+    cur[last] = os.str();
+}
+
+void readSpeciesMap(const YamlInput& in, const std::string& key, const Mechanism& mech,
+                    std::vector<double>& target, double factorPerMolarMass, bool perMolarMass,
+                    const std::string& unit)
+{
+    if (!in.has(key)) return;
+    const YamlInput m = in.child(key);
+    if (!m.node().IsMap()) throw in.error(key, "a map of species to values [" + unit + "]");
+    for (const auto& name : m.keys())
+    {
+        const std::size_t i = mech.index(name, in.file() + ": key '" + m.path() + "'");
+        const double v = m.nonNegative(name, unit);
+        target[i] = perMolarMass ? v * factorPerMolarMass / mech.species[i].molarMass : v;
+    }
+}
+
+} // namespace
+
+std::string expandAlias(const std::string& key)
+{
+    if (key == "I") return "corona.current_mA";
+    if (key == "V") return "corona.voltage_kV";
+    return key;
+}
+
+SweepDim parseSweep(const std::string& arg)
+{
+    const auto eq = arg.find('=');
+    if (eq == std::string::npos || eq == 0)
+    {
+        throw InputError("--sweep expected KEY=v1,v2,... (e.g. I=0.1,0.3,0.5), got '" + arg + "'");
+    }
+    SweepDim d;
+    d.key = expandAlias(arg.substr(0, eq));
+    std::stringstream ss(arg.substr(eq + 1));
+    std::string v;
+    while (std::getline(ss, v, ','))
+    {
+        try
+        {
+            std::size_t used = 0;
+            d.values.push_back(std::stod(v, &used));
+            if (used != v.size()) throw std::invalid_argument(v);
+        }
+        catch (const std::exception&)
+        {
+            throw InputError("--sweep " + d.key + ": expected numbers separated by commas, got '" + v + "'");
+        }
+    }
+    if (d.values.empty()) throw InputError("--sweep " + d.key + ": no values given");
+    return d;
+}
+
+double Case::radicalConcentration() const
+{
+    if (!radicalFixed()) return 0;
+    const double mw = mech.species[mech.radicalIndex()].molarMass;
+    double mgPerL = 0;
+    if (oh.kind == "constant") mgPerL = oh.concentration;
+    else if (oh.kind == "linear_current") mgPerL = oh.intercept + oh.slope * current;
+    return mgPerL / 1000.0 / mw;
+}
+
+std::vector<double> Case::feedRate() const
+{
+    std::vector<double> f(mech.species.size(), 0.0);
+    for (std::size_t i = 0; i < f.size(); ++i)
+    {
+        f[i] = gasFlow * (inletPpm[i] - effluentPpm[i]) * 1e-6 / volume;
+    }
+    return f;
+}
+
+CaseSource CaseSource::load(const std::string& path)
+{
+    const YamlInput in = YamlInput::load(path);
+    CaseSource s;
+    s.file_ = path;
+    s.node_ = in.node();
+    const std::string mechFile = in.text("mechanism");
+    std::filesystem::path mp(mechFile);
+    if (mp.is_relative()) mp = std::filesystem::path(path).parent_path() / mp;
+    if (!std::filesystem::exists(mp))
+    {
+        throw InputError(path + ": key 'mechanism': file '" + mp.string() + "' not found");
+    }
+    s.mech_ = Mechanism::load(mp.string());
+    return s;
+}
+
+Case CaseSource::build(const Overrides& overrides) const
+{
+    Case c;
+    c.file = file_;
+    c.mech = mech_;
+    YAML::Node node = YAML::Clone(node_);
+    for (const auto& [keyIn, value] : overrides)
+    {
+        const std::string key = expandAlias(keyIn);
+        if (key.rfind("k.", 0) == 0)
+        {
+            const std::string id = key.substr(2);
+            const std::size_t r = c.mech.reaction(id);
+            if (r == std::string::npos)
+            {
+                throw InputError(c.mech.file + ": no reaction with id '" + id + "' (from '" + key + "')");
+            }
+            if (!(value >= 0)) throw InputError(key + ": a rate constant must be >= 0");
+            c.mech.reactions[r].k = value;
+        }
+        else
+        {
+            applyYamlOverride(node, file_, key, value);
+        }
+    }
+    const YamlInput in(node, file_, "");
+    in.rejectUnknown({"title", "mechanism", "reactor", "gas", "initial_mg_per_L", "initial_mol_per_L",
+                      "corona", "oh", "time", "solver", "report", "sweep", "sensitivity"});
+    c.title = in.text("title", std::filesystem::path(file_).stem().string());
+    const std::size_t n = c.mech.species.size();
+
+    const YamlInput reactor = in.child("reactor");
+    reactor.rejectUnknown({"liquid_volume_L"});
+    c.volume = reactor.positive("liquid_volume_L", "L");
+
+    c.inletPpm.assign(n, 0.0);
+    c.effluentPpm.assign(n, 0.0);
+    if (in.has("gas"))
+    {
+        const YamlInput gas = in.child("gas");
+        gas.rejectUnknown({"flow_mL_per_min", "temperature_C", "pressure_kPa", "inlet_ppm", "effluent_ppm"});
+        const double flow = gas.nonNegative("flow_mL_per_min", "mL/min");
+        const double tC = gas.number("temperature_C", "degC");
+        if (tC <= -273.15) throw gas.error("temperature_C", "a temperature above absolute zero [degC]");
+        const double pKPa = gas.positive("pressure_kPa", "kPa");
+        c.gasFlow = pKPa * 1e3 * flow * 1e-6 / 60.0 / (gasConstant * (tC + 273.15));
+        readSpeciesMap(gas, "inlet_ppm", c.mech, c.inletPpm, 1, false, "ppm by mol");
+        readSpeciesMap(gas, "effluent_ppm", c.mech, c.effluentPpm, 1, false, "ppm by mol");
+        for (std::size_t i = 0; i < n; ++i)
+        {
+            if (c.effluentPpm[i] > c.inletPpm[i])
+            {
+                throw InputError(file_ + ": key 'gas.effluent_ppm." + c.mech.species[i].name
+                                 + "' expected a value <= the inlet concentration");
+            }
+        }
+    }
+
+    c.initial.assign(n, 0.0);
+    readSpeciesMap(in, "initial_mg_per_L", c.mech, c.initial, 1e-3, true, "mg/L");
+    if (in.has("initial_mol_per_L"))
+    {
+        std::vector<double> molar(n, 0.0);
+        readSpeciesMap(in, "initial_mol_per_L", c.mech, molar, 1, false, "mol/L");
+        for (std::size_t i = 0; i < n; ++i) c.initial[i] += molar[i];
+    }
+
+    if (in.has("corona"))
+    {
+        const YamlInput co = in.child("corona");
+        co.rejectUnknown({"current_mA", "voltage_kV"});
+        c.current = co.nonNegative("current_mA", "mA");
+        c.voltage = co.has("voltage_kV") ? co.positive("voltage_kV", "kV") : 0.0;
+    }
+
+    if (in.has("oh"))
+    {
+        const YamlInput oh = in.child("oh");
+        c.oh.kind = oh.text("model");
+        if (!c.mech.hasRadical())
+        {
+            throw InputError(file_ + ": key 'oh' needs a mechanism with 'radical: <species>' ("
+                             + c.mech.file + " has none)");
+        }
+        if (c.oh.kind == "constant")
+        {
+            oh.rejectUnknown({"model", "concentration_mg_per_L"});
+            c.oh.concentration = oh.nonNegative("concentration_mg_per_L", "mg/L");
+        }
+        else if (c.oh.kind == "linear_current")
+        {
+            oh.rejectUnknown({"model", "slope_mg_per_L_per_mA", "intercept_mg_per_L"});
+            c.oh.slope = oh.nonNegative("slope_mg_per_L_per_mA", "mg/L per mA");
+            c.oh.intercept = oh.number("intercept_mg_per_L", 0.0, "mg/L");
+            if (!in.has("corona")) throw in.error("corona", "a section with current_mA (oh.model is linear_current)");
+        }
+        else if (c.oh.kind == "dynamic")
+        {
+            oh.rejectUnknown({"model"});
+        }
+        else
+        {
+            throw oh.error("model", "one of constant, linear_current, dynamic");
+        }
+        if (c.radicalFixed() && c.radicalConcentration() < 0)
+        {
+            throw InputError(file_ + ": key 'oh' gives a negative [OH] at the current " + std::to_string(c.current) + " mA");
+        }
+    }
+    else if (c.mech.hasRadical())
+    {
+        throw in.error("oh", "a section 'oh' (the mechanism has radical " + c.mech.radical + ")");
+    }
+
+    const YamlInput time = in.child("time");
+    time.rejectUnknown({"duration_h", "output_interval_min", "duration_s", "output_interval_s"});
+    if (time.has("duration_h")) c.duration = 3600.0 * time.positive("duration_h", "h");
+    else if (time.has("duration_s")) c.duration = time.positive("duration_s", "s");
+    else throw time.error("duration_h", "a positive number [h] (or duration_s)");
+    if (time.has("output_interval_min")) c.outputInterval = 60.0 * time.positive("output_interval_min", "min");
+    else if (time.has("output_interval_s")) c.outputInterval = time.positive("output_interval_s", "s");
+    else throw time.error("output_interval_min", "a positive number [min] (or output_interval_s)");
+    if (c.outputInterval > c.duration) throw time.error("output_interval_min", "an interval no longer than the duration");
+
+    if (in.has("solver"))
+    {
+        const YamlInput so = in.child("solver");
+        so.rejectUnknown({"method", "rk4_step_s", "rtol", "atol_mol_per_L"});
+        c.solver.method = so.text("method", "expm");
+        if (c.solver.method != "expm" && c.solver.method != "rk4" && c.solver.method != "cvode")
+        {
+            throw so.error("method", "one of expm, rk4, cvode");
+        }
+        if (so.has("rk4_step_s")) c.solver.rk4Step = so.positive("rk4_step_s", "s");
+        if (so.has("rtol")) c.solver.rtol = so.positive("rtol");
+        if (so.has("atol_mol_per_L")) c.solver.atol = so.positive("atol_mol_per_L", "mol/L");
+    }
+
+    if (in.has("report"))
+    {
+        const YamlInput rep = in.child("report");
+        rep.rejectUnknown({"times_h", "plot_species"});
+        if (rep.has("times_h"))
+            for (double t : rep.numbers("times_h", "h"))
+            {
+                if (t < 0 || t * 3600.0 > c.duration * (1 + 1e-12)) throw rep.error("times_h", "times within the run [h]");
+                c.reportTimes.push_back(t * 3600.0);
+            }
+        if (rep.has("plot_species"))
+        {
+            const YamlInput ps = rep.child("plot_species");
+            for (const auto& s : ps.items())
+            {
+                const std::string name = s.node().as<std::string>();
+                c.mech.index(name, file_ + ": key '" + s.path() + "'");
+                c.plotSpecies.push_back(name);
+            }
+        }
+    }
+    if (in.has("sweep"))
+    {
+        for (const auto& d : in.child("sweep").items())
+        {
+            d.rejectUnknown({"key", "values"});
+            SweepDim s;
+            s.key = expandAlias(d.text("key"));
+            s.values = d.numbers("values");
+            if (s.values.empty()) throw d.error("values", "a non-empty list of numbers");
+            c.sweep.push_back(s);
+        }
+        if (c.sweep.size() > 2) throw InputError(file_ + ": key 'sweep' expected at most two swept keys");
+    }
+    if (in.has("sensitivity"))
+    {
+        const YamlInput se = in.child("sensitivity");
+        se.rejectUnknown({"parameters", "outputs", "time_h", "change_percent"});
+        if (se.has("parameters"))
+            for (const auto& p : se.child("parameters").items())
+            {
+                const std::string id = p.node().as<std::string>();
+                if (c.mech.reaction(id) == std::string::npos)
+                    throw InputError(file_ + ": key '" + p.path() + "': no reaction with id '" + id + "'");
+                c.sensParameters.push_back(id);
+            }
+        if (se.has("outputs"))
+            for (const auto& p : se.child("outputs").items())
+            {
+                const std::string o = p.node().as<std::string>();
+                if (o != "TOC") c.mech.index(o, file_ + ": key '" + p.path() + "'");
+                c.sensOutputs.push_back(o);
+            }
+        if (se.has("time_h"))
+        {
+            c.sensTime = 3600.0 * se.positive("time_h", "h");
+            if (c.sensTime > c.duration * (1 + 1e-12)) throw se.error("time_h", "a time within the run [h]");
+        }
+        if (se.has("change_percent")) c.sensChange = se.positive("change_percent", "%") / 100.0;
+    }
+    return c;
+}
+
+} // namespace procsim::kinetics
