@@ -1,0 +1,690 @@
+// procsim dryer: batch hot-air tray dryer (the tray-dryer paper): energy
+// metrics from batch records, psychrometrics, a physical batch simulation,
+// calibration on measured batches and what-if sweeps.
+#include "dryer/Main.hpp"
+
+#include <sys/stat.h>
+
+#include <cmath>
+#include <cstdio>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "common/Cli.hpp"
+#include "common/Csv.hpp"
+#include "common/Plot.hpp"
+#include "dryer/Calibrate.hpp"
+#include "dryer/Metrics.hpp"
+#include "dryer/Model.hpp"
+#include "dryer/Plant.hpp"
+#include "dryer/Psychrometrics.hpp"
+
+namespace procsim::dryer
+{
+
+namespace
+{
+
+const char* kUsage =
+    "usage: procsim dryer <command> [options]   (procsim dryer <command> --help)\n"
+    "\n"
+    "Batch hot-air tray dryer with recirculation and partial venting (the\n"
+    "dog-chew tray-dryer paper, Tables 1 and 2).\n"
+    "\n"
+    "commands:\n"
+    "  metrics    E, eta, water evaporated and dry mass from batch records (Table 1)\n"
+    "  psychro    moist-air properties at one state (0..200 degC)\n"
+    "  simulate   simulate batches of a plant file: air, moisture per tray, energy\n"
+    "  calibrate  fit uncertain parameters on measured batches, predict others\n"
+    "  whatif     sweep hot-air temperature and vented fraction, flag scorching\n"
+    "\n"
+    "Definitions (paper): X = kg water / kg bone-dry material (dry basis, %);\n"
+    "eta = energy used for evaporating water / energy used for operating dryer;\n"
+    "E = energy used for operating dryer / mass of evaporated water.\n";
+
+const char* kMetricsHelp =
+    "usage: procsim dryer metrics RECORDS.{yaml,csv} [--out DIR] [--latent-heat-kJ-per-kg L]\n"
+    "\n"
+    "Computes, per batch: evaporated water W, dry mass, average evaporation\n"
+    "rate, specific energy E = Q/W [kJ/kg] and energy efficiency eta = W L / Q,\n"
+    "with Q the electricity used. Writes DIR/metrics.csv (default DIR '.').\n"
+    "\n"
+    "Evaporated water comes from, in order of preference: evaporated_water_kg;\n"
+    "dry_mass_kg x (X1 - X2); evaporation_rate_kg_per_h x drying time. If a\n"
+    "rate is given as well, rate x time is cross-checked (warning if > 1 % off).\n"
+    "\n"
+    "Latent heat L per kg (\"energy used for evaporating water\"):\n"
+    "  default  liquid at ambient -> vapour at the hot-air temperature,\n"
+    "           L = 2501 + 1.86 T_hot - 4.186 T_amb kJ/kg\n"
+    "  --latent-heat-kJ-per-kg L   a constant instead (e.g. 2501, at 0 degC)\n"
+    "\n"
+    "YAML records:\n"
+    "  latent_heat:            (optional) convention: ambient-liquid-to-hot-air-vapour\n"
+    "                          | constant, with value_kJ_per_kg for 'constant'\n"
+    "  ambient_temperature_C:  default ambient for all batches [degC]\n"
+    "  batches: list of\n"
+    "    id                              batch name (text)\n"
+    "    dryer, material, note           free text (optional)\n"
+    "    hot_air_temperature_C           hot-air set-point [degC], above ambient\n"
+    "    ambient_temperature_C           (optional) overrides the top-level value\n"
+    "    initial_moisture_percent_db     X1, average before drying [% dry basis]\n"
+    "    final_moisture_percent_db       X2, average after drying [% dry basis], < X1\n"
+    "    drying_time                     'hours:minutes', or drying_time_h [h]\n"
+    "    electricity_kWh                 electricity for the batch [kWh]\n"
+    "    evaporation_rate_kg_per_h       average rate [kg/h]     } at least\n"
+    "    dry_mass_kg                     bone-dry mass [kg]      } one of\n"
+    "    evaporated_water_kg             weighed water loss [kg] } these\n"
+    "    paper_energy_efficiency_percent (optional) published eta, for comparison\n"
+    "    paper_specific_energy_kJ_per_kg (optional) published E, for comparison\n"
+    "CSV records: the same names as columns (drying_time_h, not 'h:min'; 'batch'\n"
+    "for the id; 'nan' for a missing optional value).\n";
+
+const char* kPsychroHelp =
+    "usage: procsim dryer psychro --t T_C (--rh RH_% | --w W | --twb T_C | --tdew T_C)\n"
+    "                             [--p P_kPa]\n"
+    "\n"
+    "Moist-air state at dry bulb T (-100..200 degC) and total pressure P\n"
+    "(default 101.325 kPa), given one of: relative humidity [%], humidity ratio\n"
+    "[kg water/kg dry air], thermodynamic wet bulb [degC] or dew point [degC].\n"
+    "Prints saturation pressure, humidity ratio, relative humidity, enthalpy,\n"
+    "dew point, thermodynamic wet bulb, specific volume and density.\n"
+    "Formulation: ASHRAE Fundamentals ch. 1 (Hyland-Wexler saturation pressure,\n"
+    "ideal mixing); the wet bulb is found by bisection and always converges.\n";
+
+const char* kPlantHelp =
+    "Plant file (YAML; every key is required unless marked optional):\n"
+    "  dryer:\n"
+    "    carts, trays_per_cart, pieces_per_tray   layout (paper: 9 carts, 15 trays, ~160 pieces)\n"
+    "    air_holdup_kg                  dry air inside the dryer [kg]\n"
+    "    wall_UA_W_per_K                heat loss through walls, roof, doors [W/K]\n"
+    "    heater_power_kW                installed heater power (cap) [kW]\n"
+    "    fan_power_kW                   electrical power of all fans, heats the air [kW]\n"
+    "    circulation_kg_per_s           dry air through the fans G [kg/s]\n"
+    "    heat_transfer_coefficient_W_per_m2K  air -> product h at the mean air share\n"
+    "    velocity_exponent              h ~ (local air share)^n (0.8 turbulent, 0.5 laminar)\n"
+    "    air_distribution:              (optional) relative air shares, normalised to mean 1\n"
+    "      cart_factors                 one per cart\n"
+    "      tray_factors                 one per tray position, top tray first\n"
+    "  product:\n"
+    "    piece_diameter_mm, piece_length_m   rod-shaped pieces; area = pieces x pi d L\n"
+    "    specific_heat_dry_J_per_kgK    bone-dry product\n"
+    "    scorch_temperature_C           product temperature that scorches\n"
+    "  kinetics:   characteristic drying curve\n"
+    "    critical_moisture_percent_db   X_cr: constant rate above, falling rate below\n"
+    "    equilibrium_moisture_percent_db  X_eq: rate zero at and below\n"
+    "    falling_rate_exponent          n in f = ((X - X_eq)/(X_cr - X_eq))^n\n"
+    "  operation:\n"
+    "    ambient_temperature_C, ambient_relative_humidity_percent, pressure_kPa\n"
+    "  run: (optional) max_time_h (30), output_interval_min (10)\n"
+    "  venting: named arrangements, each\n"
+    "    vented_fraction                vented air G_v / G, replaced by ambient air\n"
+    "    vent_short_circuit_fraction    share of G_v drawn from the freshly heated\n"
+    "                                   supply instead of the humid return air\n"
+    "  batches: list of\n"
+    "    id, venting (a name above), hot_air_temperature_C (set-point at the louvres)\n"
+    "    dry_mass_kg, initial_moisture_percent_db, target_moisture_percent_db\n"
+    "    initial_moisture_spread_percent (optional, relative std dev over trays)\n"
+    "    pattern_seed (optional integer)\n"
+    "    measured: (optional) drying_time 'h:min', electricity_kWh, f1_percent, f2_percent\n"
+    "  calibration: (optional)\n"
+    "    fit: list of {parameter, lower, upper}; parameter one of\n"
+    "         heat_transfer_coefficient_W_per_m2K, falling_rate_exponent,\n"
+    "         critical_moisture_percent_db, wall_UA_W_per_K,\n"
+    "         venting.<name>.vented_fraction, venting.<name>.vent_short_circuit_fraction\n"
+    "    calibrate_on: batch ids; predict: batch ids; predict_venting: a venting name\n"
+    "  whatif: (optional)\n"
+    "    batch, venting, hot_air_temperatures_C: [..], vented_fractions: [..]\n";
+
+std::string simulateHelp()
+{
+    return std::string(
+               "usage: procsim dryer simulate PLANT.yaml [--batch ID] [--out DIR]\n"
+               "\n"
+               "Simulates each batch (or only ID) until the batch-average moisture reaches\n"
+               "its target. Writes to DIR (default '.'):\n"
+               "  <id>_series.csv   time [h], supply/return air temperature [degC] and\n"
+               "                    humidity, moisture mean/min/max, product temperature,\n"
+               "                    heater power [kW], evaporation [kg/h], electricity [kWh]\n"
+               "  <id>_trays.csv    per tray: cart, tray, air share, X initial/final [%],\n"
+               "                    deviation from the mean [%], product temperature\n"
+               "  <id>_tray_moisture.csv  moisture of every tray over time\n"
+               "  <id>_batch.png    air temperatures and moisture over time\n"
+               "  simulate_summary.csv  drying time, electricity, E, eta, f1, f2, balances\n"
+               "\n")
+           + kPlantHelp;
+}
+
+std::string calibrateHelp()
+{
+    return std::string(
+               "usage: procsim dryer calibrate PLANT.yaml [--out DIR]\n"
+               "\n"
+               "Fits calibration.fit on the batches calibration.calibrate_on (least squares\n"
+               "on the relative errors of drying time and electricity, Ceres), then runs\n"
+               "calibration.predict with their own venting changed to\n"
+               "calibration.predict_venting. Writes DIR/calibration.csv (measured vs\n"
+               "model: time, electricity, E, eta), DIR/calibration.png and\n"
+               "DIR/calibrated.yaml (the plant file with the fitted values).\n"
+               "\n")
+           + kPlantHelp;
+}
+
+std::string whatifHelp()
+{
+    return std::string(
+               "usage: procsim dryer whatif PLANT.yaml [--out DIR]\n"
+               "\n"
+               "Runs whatif.batch with whatif.venting at every hot-air temperature x vented\n"
+               "fraction; flags settings whose highest product temperature exceeds\n"
+               "product.scorch_temperature_C; reports the setting with the lowest E\n"
+               "that does not scorch. Writes DIR/whatif.csv, DIR/whatif_time.png and\n"
+               "DIR/whatif_energy.png.\n"
+               "\n")
+           + kPlantHelp;
+}
+
+struct Args
+{
+    std::vector<std::string> positional;
+    std::map<std::string, std::string> options;
+};
+
+Args parse(int argc, char** argv, const std::vector<std::string>& valued)
+{
+    Args a;
+    for (int i = 1; i < argc; ++i)
+    {
+        const std::string s = argv[i];
+        if (s.rfind("--", 0) == 0)
+        {
+            bool known = false;
+            for (const auto& v : valued)
+                if (v == s) known = true;
+            if (!known) throw InputError(std::string("dryer ") + argv[0] + ": unknown option '" + s + "'");
+            if (i + 1 >= argc) throw InputError(std::string("dryer ") + argv[0] + ": option '" + s + "' needs a value");
+            a.options[s] = argv[++i];
+        }
+        else
+            a.positional.push_back(s);
+    }
+    return a;
+}
+
+double optNumber(const Args& a, const std::string& key, const std::string& cmd)
+{
+    const std::string& v = a.options.at(key);
+    std::size_t used = 0;
+    double x = 0;
+    try
+    {
+        x = std::stod(v, &used);
+    }
+    catch (const std::exception&)
+    {
+        used = 0;
+    }
+    if (used != v.size() || used == 0)
+        throw InputError("dryer " + cmd + ": option '" + key + "' expected a number, got '" + v + "'");
+    return x;
+}
+
+std::string outDir(const Args& a)
+{
+    const auto it = a.options.find("--out");
+    const std::string d = it == a.options.end() ? "." : it->second;
+    ::mkdir(d.c_str(), 0755);
+    struct stat st;
+    if (::stat(d.c_str(), &st) != 0 || !S_ISDIR(st.st_mode))
+        throw InputError("dryer: --out '" + d + "' is not a directory and cannot be created");
+    return d;
+}
+
+std::string hm(double seconds)
+{
+    const long m = std::lround(seconds / 60);
+    std::ostringstream os;
+    os << m / 60 << ":" << std::setw(2) << std::setfill('0') << m % 60;
+    return os.str();
+}
+
+std::string num(double v, int prec = 2)
+{
+    std::ostringstream os;
+    os << std::fixed << std::setprecision(prec) << v;
+    return os.str();
+}
+
+bool wantsHelp(int argc, char** argv)
+{
+    for (int i = 1; i < argc; ++i)
+        if (isHelp(argv[i])) return true;
+    return false;
+}
+
+// ---------------------------------------------------------------- metrics
+int runMetrics(int argc, char** argv)
+{
+    if (wantsHelp(argc, argv))
+    {
+        std::cout << kMetricsHelp;
+        return 0;
+    }
+    const Args a = parse(argc, argv, {"--out", "--latent-heat-kJ-per-kg"});
+    if (a.positional.size() != 1)
+        throw InputError("dryer metrics: expected one records file (see --help)");
+    BatchFile f = readBatchFile(a.positional[0]);
+    if (a.options.count("--latent-heat-kJ-per-kg"))
+    {
+        const double l = optNumber(a, "--latent-heat-kJ-per-kg", "metrics");
+        if (!(l > 0))
+            throw InputError("dryer metrics: option '--latent-heat-kJ-per-kg' expected a positive number");
+        f.latentHeat.kind = LatentHeatConvention::Kind::Constant;
+        f.latentHeat.constant = l * 1e3;
+    }
+    const std::string dir = outDir(a);
+    CsvWriter csv(dir + "/metrics.csv",
+                  {"batch", "hot_air_temperature_C", "X1_percent_db", "X2_percent_db",
+                   "drying_time_h", "electricity_kWh", "evaporated_water_kg", "dry_mass_kg",
+                   "evaporation_rate_kg_per_h", "latent_heat_kJ_per_kg", "eta_percent",
+                   "E_kJ_per_kg", "paper_eta_percent", "paper_E_kJ_per_kg", "eta_dev_percent",
+                   "E_dev_percent"});
+    std::cout << "latent heat: " << f.latentHeat.describe() << "\n\n";
+    std::cout << std::left << std::setw(7) << "batch" << std::right << std::setw(10) << "water kg"
+              << std::setw(10) << "dry kg" << std::setw(9) << "kg/h" << std::setw(9) << "L kJ/kg"
+              << std::setw(9) << "eta %" << std::setw(9) << "paper" << std::setw(10) << "E kJ/kg"
+              << std::setw(10) << "paper" << std::setw(9) << "dE %" << "\n";
+    for (const auto& b : f.batches)
+    {
+        const BatchMetrics m = computeMetrics(b, f.latentHeat);
+        const double pe = b.paperEta ? *b.paperEta * 100 : std::nan("");
+        const double pE = b.paperE ? *b.paperE / 1e3 : std::nan("");
+        const double dEta = (m.eta * 100 / pe - 1) * 100, dE = (m.specificEnergy / 1e3 / pE - 1) * 100;
+        std::cout << std::left << std::setw(7) << b.id << std::right << std::setw(10)
+                  << num(m.waterKg, 1) << std::setw(10) << num(m.dryMassKg, 1) << std::setw(9)
+                  << num(m.rateKgPerH) << std::setw(9) << num(m.latentJPerKg / 1e3, 1)
+                  << std::setw(9) << num(m.eta * 100) << std::setw(9) << num(pe) << std::setw(10)
+                  << num(m.specificEnergy / 1e3) << std::setw(10) << num(pE) << std::setw(9)
+                  << num(dE, 3) << "\n";
+        if (m.rateDisagrees)
+        {
+            std::cout << "        warning: the reported rate x drying time gives "
+                      << num(m.rateWaterKg, 1) << " kg, not " << num(m.waterKg, 1) << " kg ("
+                      << m.waterFrom << "); " << num(m.waterKg / (*b.rateKgPerS * 3600), 2)
+                      << " h would match\n";
+        }
+        csv.row(std::vector<std::string>{
+            b.id, num(b.hotAirC, 2), num(b.x1 * 100, 4), num(b.x2 * 100, 4), num(b.timeS / 3600, 6),
+            num(m.electricityKWh, 4), num(m.waterKg, 4), num(m.dryMassKg, 4), num(m.rateKgPerH, 4),
+            num(m.latentJPerKg / 1e3, 4), num(m.eta * 100, 4), num(m.specificEnergy / 1e3, 4),
+            num(pe, 4), num(pE, 4), num(dEta, 4), num(dE, 4)});
+    }
+    csv.close();
+    std::cout << "\nwrote " << dir << "/metrics.csv\n";
+    return 0;
+}
+
+// ---------------------------------------------------------------- psychro
+int runPsychro(int argc, char** argv)
+{
+    if (wantsHelp(argc, argv))
+    {
+        std::cout << kPsychroHelp;
+        return 0;
+    }
+    const Args a = parse(argc, argv, {"--t", "--rh", "--w", "--twb", "--tdew", "--p"});
+    if (!a.positional.empty()) throw InputError("dryer psychro: unexpected argument '" + a.positional[0] + "'");
+    if (!a.options.count("--t")) throw InputError("dryer psychro: option '--t' (dry bulb, degC) is required");
+    const double t = optNumber(a, "--t", "psychro");
+    if (!(t >= -100 && t <= 200))
+        throw InputError("dryer psychro: option '--t' expected a dry bulb from -100 to 200 degC");
+    const double p = a.options.count("--p") ? optNumber(a, "--p", "psychro") * 1e3 : psy::kAtm;
+    if (!(p > 0)) throw InputError("dryer psychro: option '--p' expected a positive pressure [kPa]");
+    int given = 0;
+    for (const char* k : {"--rh", "--w", "--twb", "--tdew"}) given += a.options.count(k);
+    if (given != 1)
+        throw InputError("dryer psychro: give exactly one of --rh, --w, --twb, --tdew");
+    double W = 0;
+    try
+    {
+        if (a.options.count("--rh"))
+        {
+            const double rh = optNumber(a, "--rh", "psychro");
+            if (!(rh >= 0 && rh <= 100))
+                throw InputError("dryer psychro: option '--rh' expected 0 to 100 %, got " + a.options.at("--rh"));
+            if (rh / 100 * psy::saturationPressure(t) >= p)
+                throw InputError("dryer psychro: option '--rh' gives a vapour pressure at or above the total pressure");
+            W = psy::humidityRatioFromRH(t, rh / 100, p);
+        }
+        else if (a.options.count("--w"))
+        {
+            W = optNumber(a, "--w", "psychro");
+            if (!(W >= 0)) throw InputError("dryer psychro: option '--w' expected a humidity ratio >= 0");
+            if (psy::relativeHumidity(t, W, p) > 1 + 1e-12)
+                throw InputError("dryer psychro: option '--w' is above saturation at this dry bulb (relative humidity over 100 %)");
+        }
+        else if (a.options.count("--twb"))
+        {
+            const double twb = optNumber(a, "--twb", "psychro");
+            if (!(twb <= t && twb >= -100))
+                throw InputError("dryer psychro: option '--twb' expected a wet bulb at or below the dry bulb");
+            W = psy::humidityRatioFromWetBulb(t, twb, p);
+            if (!(W >= 0))
+                throw InputError("dryer psychro: option '--twb' is too low for any humidity at this dry bulb");
+        }
+        else
+        {
+            const double td = optNumber(a, "--tdew", "psychro");
+            if (!(td <= t && td >= -100))
+                throw InputError("dryer psychro: option '--tdew' expected a dew point at or below the dry bulb");
+            W = psy::humidityRatioFromPw(psy::saturationPressure(td), p);
+        }
+    }
+    catch (const std::domain_error& e)
+    {
+        throw InputError(std::string("dryer psychro: ") + e.what());
+    }
+    const double pws = psy::saturationPressure(t);
+    std::cout << std::setprecision(6) << "dry bulb                " << t << " degC\n"
+              << "pressure                " << p / 1e3 << " kPa\n"
+              << "saturation pressure     " << pws / 1e3 << " kPa\n"
+              << "humidity ratio          " << W << " kg/kg dry air\n"
+              << "relative humidity       " << psy::relativeHumidity(t, W, p) * 100 << " %\n"
+              << "enthalpy                " << psy::enthalpy(t, W) / 1e3 << " kJ/kg dry air\n"
+              << "dew point               " << (W > 0 ? num(psy::dewPoint(W, p), 3) : std::string("-inf")) << " degC\n"
+              << "thermodynamic wet bulb  " << psy::wetBulb(t, W, p) << " degC\n"
+              << "specific volume         " << psy::specificVolume(t, W, p) << " m3/kg dry air\n"
+              << "density                 " << psy::density(t, W, p) << " kg/m3\n";
+    return 0;
+}
+
+// ---------------------------------------------------------------- simulate
+void writeBatchOutputs(const std::string& dir, const DryerCase& c, const BatchResult& r)
+{
+    const std::string base = dir + "/" + c.name;
+    {
+        CsvWriter s(base + "_series.csv",
+                    {"time_h", "T_supply_C", "T_return_C", "W_supply_kg_per_kg",
+                     "W_return_kg_per_kg", "RH_return_percent", "X_mean_percent_db",
+                     "X_min_percent_db", "X_max_percent_db", "T_product_mean_C",
+                     "T_product_max_C", "heater_kW", "evaporation_kg_per_h",
+                     "electricity_kWh"});
+        for (const auto& p : r.series)
+            s.row(std::vector<double>{p.t / 3600, p.tSupply, p.tReturn, p.wSupply, p.wReturn,
+                                      p.rhReturn * 100, p.xAvg * 100, p.xMin * 100, p.xMax * 100,
+                                      p.tProductMean, p.tProductMax, p.heaterW / 1e3,
+                                      p.evaporationKgPerS * 3600, p.electricityJ / 3.6e6});
+        s.close();
+    }
+    {
+        const auto phi = c.airShares();
+        double mean = 0;
+        for (double x : r.trayX) mean += x / r.trayX.size();
+        CsvWriter t(base + "_trays.csv", {"cart", "tray", "air_share", "X_initial_percent_db",
+                                          "X_final_percent_db", "deviation_percent",
+                                          "T_product_final_C"});
+        for (int ci = 0; ci < c.carts; ++ci)
+            for (int k = 0; k < c.traysPerCart; ++k)
+            {
+                const std::size_t i = static_cast<std::size_t>(ci * c.traysPerCart + k);
+                t.row(std::vector<double>{double(ci + 1), double(k + 1), phi[i], r.trayX0[i] * 100,
+                                          r.trayX[i] * 100, (r.trayX[i] / mean - 1) * 100,
+                                          r.trayT[i]});
+            }
+        t.close();
+    }
+    {
+        std::vector<std::string> h{"time_h"};
+        for (int ci = 0; ci < c.carts; ++ci)
+            for (int k = 0; k < c.traysPerCart; ++k)
+                h.push_back("X_cart" + std::to_string(ci + 1) + "_tray" + std::to_string(k + 1)
+                            + "_percent_db");
+        CsvWriter m(base + "_tray_moisture.csv", h);
+        for (std::size_t j = 0; j < r.series.size(); ++j)
+        {
+            std::vector<double> row{r.series[j].t / 3600};
+            for (double x : r.trayXSeries[j]) row.push_back(x * 100);
+            m.row(row);
+        }
+        m.close();
+    }
+    const std::string csv = base + "_series.csv";
+    plotPng(base + "_batch.png",
+            "set datafile separator ','\nset key autotitle columnhead outside bottom\n"
+            "set multiplot layout 2,1 title 'batch " + c.name + "'\n"
+            "set ylabel 'temperature [degC]'\nset xlabel 'time [h]'\n"
+            "plot '" + csv + "' u 1:2 w l lw 2, '' u 1:3 w l lw 2, '' u 1:10 w l, '' u 1:11 w l\n"
+            "set ylabel 'moisture [% dry basis]'\n"
+            "plot '" + csv + "' u 1:7 w l lw 2, '' u 1:8 w l, '' u 1:9 w l\n"
+            "unset multiplot\n",
+            900, 800);
+}
+
+int runSimulate(int argc, char** argv)
+{
+    if (wantsHelp(argc, argv))
+    {
+        std::cout << simulateHelp();
+        return 0;
+    }
+    const Args a = parse(argc, argv, {"--out", "--batch"});
+    if (a.positional.size() != 1)
+        throw InputError("dryer simulate: expected one plant file (see --help)");
+    const Plant plant = readPlant(a.positional[0]);
+    const std::string dir = outDir(a);
+    std::vector<const BatchSpec*> todo;
+    if (a.options.count("--batch"))
+        todo.push_back(&plant.batch(a.options.at("--batch")));
+    else
+        for (const auto& b : plant.batches) todo.push_back(&b);
+    CsvWriter sum(dir + "/simulate_summary.csv",
+                  {"batch", "reached_target", "drying_time_h", "electricity_kWh",
+                   "evaporated_water_kg", "E_kJ_per_kg", "eta_percent", "T_product_max_C",
+                   "scorched", "f1_percent", "f2_percent", "water_balance_rel",
+                   "energy_balance_rel"});
+    std::cout << std::left << std::setw(7) << "batch" << std::right << std::setw(8) << "time"
+              << std::setw(10) << "kWh" << std::setw(10) << "water kg" << std::setw(10) << "E kJ/kg"
+              << std::setw(8) << "eta %" << std::setw(8) << "Tp max" << std::setw(7) << "f1 %"
+              << std::setw(7) << "f2 %" << std::setw(11) << "water bal" << std::setw(11)
+              << "energy bal" << "\n";
+    for (const BatchSpec* b : todo)
+    {
+        const DryerCase c = plant.caseFor(*b);
+        const BatchResult r = simulate(c);
+        writeBatchOutputs(dir, c, r);
+        std::ostringstream wb, eb;
+        wb << std::scientific << std::setprecision(1) << r.waterBalanceRel;
+        eb << std::scientific << std::setprecision(1) << r.energyBalanceRel;
+        std::cout << std::left << std::setw(7) << b->id << std::right << std::setw(8)
+                  << (r.reachedTarget ? hm(r.dryingTime) : ">" + hm(r.dryingTime)) << std::setw(10)
+                  << num(r.electricityJ / 3.6e6, 1) << std::setw(10) << num(r.waterEvaporated, 1)
+                  << std::setw(10) << num(r.specificEnergy / 1e3, 0) << std::setw(8)
+                  << num(r.eta * 100, 1) << std::setw(8) << num(r.tProductMax, 1) << std::setw(7)
+                  << num(r.f1, 1) << std::setw(7) << num(r.f2, 1) << std::setw(11) << wb.str()
+                  << std::setw(11) << eb.str() << (r.scorched ? "  SCORCHED" : "") << "\n";
+        sum.row(std::vector<std::string>{
+            b->id, r.reachedTarget ? "1" : "0", num(r.dryingTime / 3600, 4),
+            num(r.electricityJ / 3.6e6, 3), num(r.waterEvaporated, 3), num(r.specificEnergy / 1e3, 3),
+            num(r.eta * 100, 3), num(r.tProductMax, 3), r.scorched ? "1" : "0", num(r.f1, 2),
+            num(r.f2, 2), wb.str(), eb.str()});
+    }
+    sum.close();
+    std::cout << "\nwrote " << dir << "/simulate_summary.csv and per-batch CSV/PNG\n";
+    return 0;
+}
+
+// ---------------------------------------------------------------- calibrate
+int runCalibrate(int argc, char** argv)
+{
+    if (wantsHelp(argc, argv))
+    {
+        std::cout << calibrateHelp();
+        return 0;
+    }
+    const Args a = parse(argc, argv, {"--out"});
+    if (a.positional.size() != 1)
+        throw InputError("dryer calibrate: expected one plant file (see --help)");
+    Plant plant = readPlant(a.positional[0]);
+    if (plant.fit.empty())
+        throw InputError(plant.file + ": key 'calibration' is missing (needed by calibrate)");
+    const std::string dir = outDir(a);
+    const CalibrationResult cr = calibrate(plant);
+    std::cout << "calibration on batches";
+    for (const auto& id : plant.calibrateOn) std::cout << " " << id;
+    std::cout << ": " << cr.report << "\n";
+    for (std::size_t i = 0; i < plant.fit.size(); ++i)
+        std::cout << "  " << std::left << std::setw(46) << plant.fit[i].name << std::right
+                  << " start " << std::setw(10) << num(cr.start[i], 4) << "  fitted "
+                  << std::setw(10) << num(cr.fitted[i], 4) << "\n";
+    writePlant(plant, dir + "/calibrated.yaml",
+               "plant file with parameters fitted by 'procsim dryer calibrate'");
+
+    CsvWriter csv(dir + "/calibration.csv",
+                  {"batch", "role", "venting", "time_measured_h", "time_model_h",
+                   "electricity_measured_kWh", "electricity_model_kWh", "E_measured_kJ_per_kg",
+                   "E_model_kJ_per_kg", "eta_measured_percent", "eta_model_percent",
+                   "time_error_percent", "E_error_percent"});
+    std::cout << "\n" << std::left << std::setw(7) << "batch" << std::setw(10) << "role"
+              << std::right << std::setw(16) << "time meas/model" << std::setw(16)
+              << "kWh meas/model" << std::setw(18) << "E meas/model" << std::setw(16)
+              << "eta meas/model" << "\n";
+    auto runOne = [&](const std::string& id, const std::string& role, const std::string& vent) {
+        const BatchSpec& b = plant.batch(id);
+        const DryerCase c = plant.caseFor(b, vent);
+        const BatchResult r = simulate(c);
+        const double water = b.dryMass * (b.x0 - b.xTarget);
+        const double L = r.latentPerKg;
+        const double tm = b.measuredTime ? *b.measuredTime : std::nan("");
+        const double qm = b.measuredElectricity ? *b.measuredElectricity : std::nan("");
+        const double Em = qm / water, etam = water * L / qm;
+        std::cout << std::left << std::setw(7) << id << std::setw(10) << role << std::right
+                  << std::setw(8) << (b.measuredTime ? hm(tm) : "-") << std::setw(8)
+                  << hm(r.dryingTime) << std::setw(8) << num(qm / 3.6e6, 0) << std::setw(8)
+                  << num(r.electricityJ / 3.6e6, 0) << std::setw(9) << num(Em / 1e3, 0)
+                  << std::setw(9) << num(r.specificEnergy / 1e3, 0) << std::setw(8)
+                  << num(etam * 100, 1) << std::setw(8) << num(r.eta * 100, 1) << "\n";
+        csv.row(std::vector<std::string>{
+            id, role, vent, num(tm / 3600, 4), num(r.dryingTime / 3600, 4), num(qm / 3.6e6, 2),
+            num(r.electricityJ / 3.6e6, 2), num(Em / 1e3, 2), num(r.specificEnergy / 1e3, 2),
+            num(etam * 100, 3), num(r.eta * 100, 3), num((r.dryingTime / tm - 1) * 100, 2),
+            num((r.specificEnergy / Em - 1) * 100, 2)});
+    };
+    for (const auto& id : plant.calibrateOn) runOne(id, "fitted", plant.batch(id).venting);
+    for (const auto& id : plant.predict) runOne(id, "predicted", plant.predictVenting);
+    csv.close();
+    const std::string f = dir + "/calibration.csv";
+    plotPng(dir + "/calibration.png",
+            "set datafile separator ','\nset multiplot layout 1,2 title 'calibrated on "
+            "old-dryer batches, predicted with the modified venting'\n"
+            "set style data histograms\nset style histogram clustered gap 1\n"
+            "set style fill solid 0.7 border -1\nset key top left\nset yrange [0:*]\n"
+            "set ylabel 'drying time [h]'\nset xlabel 'batch (1-3 fitted, 4-5 predicted)'\n"
+            "plot '" + f + "' u 4:xtic(1) t 'measured', '' u 5 t 'model'\n"
+            "set ylabel 'specific energy E [kJ/kg water]'\n"
+            "plot '" + f + "' u 8:xtic(1) t 'measured', '' u 9 t 'model'\n"
+            "unset multiplot\n",
+            1100, 500);
+    std::cout << "\nwrote " << dir << "/calibration.csv, calibration.png, calibrated.yaml\n";
+    return 0;
+}
+
+// ---------------------------------------------------------------- whatif
+int runWhatif(int argc, char** argv)
+{
+    if (wantsHelp(argc, argv))
+    {
+        std::cout << whatifHelp();
+        return 0;
+    }
+    const Args a = parse(argc, argv, {"--out"});
+    if (a.positional.size() != 1)
+        throw InputError("dryer whatif: expected one plant file (see --help)");
+    const Plant plant = readPlant(a.positional[0]);
+    if (plant.whatifBatch.empty())
+        throw InputError(plant.file + ": key 'whatif' is missing (needed by whatif)");
+    const std::string dir = outDir(a);
+    const BatchSpec& b = plant.batch(plant.whatifBatch);
+    CsvWriter csv(dir + "/whatif.csv",
+                  {"hot_air_temperature_C", "vented_fraction", "reached_target", "drying_time_h",
+                   "electricity_kWh", "E_kJ_per_kg", "eta_percent", "T_product_max_C",
+                   "scorched"});
+    double bestE = 1e300;
+    std::string best;
+    std::cout << std::setw(8) << "T_hot" << std::setw(9) << "vented" << std::setw(9) << "time"
+              << std::setw(10) << "E kJ/kg" << std::setw(9) << "Tp max" << "\n";
+    for (double v : plant.whatifVentedFractions)
+    {
+        for (double T : plant.whatifTemperatures)
+        {
+            DryerCase c = plant.caseFor(b, plant.whatifVenting);
+            c.hotAirC = T;
+            c.ventedFraction = v;
+            const BatchResult r = simulate(c);
+            std::cout << std::setw(8) << num(T, 1) << std::setw(9) << num(v, 3) << std::setw(9)
+                      << (r.reachedTarget ? hm(r.dryingTime) : ">" + hm(r.dryingTime))
+                      << std::setw(10) << num(r.specificEnergy / 1e3, 0) << std::setw(9)
+                      << num(r.tProductMax, 1) << (r.scorched ? "  SCORCHED" : "") << "\n";
+            csv.row(std::vector<double>{T, v, r.reachedTarget ? 1.0 : 0.0, r.dryingTime / 3600,
+                                        r.electricityJ / 3.6e6, r.specificEnergy / 1e3,
+                                        r.eta * 100, r.tProductMax, r.scorched ? 1.0 : 0.0});
+            if (r.reachedTarget && !r.scorched && r.specificEnergy < bestE)
+            {
+                bestE = r.specificEnergy;
+                best = "hot air " + num(T, 1) + " degC, vented fraction " + num(v, 3) + ": "
+                       + hm(r.dryingTime) + " h, E = " + num(r.specificEnergy / 1e3, 0)
+                       + " kJ/kg, highest product temperature " + num(r.tProductMax, 1) + " degC";
+            }
+        }
+        csv.row(std::vector<std::string>{});   // blank line: gnuplot data blocks
+    }
+    csv.close();
+    const std::string f = dir + "/whatif.csv";
+    const std::string common =
+        "set datafile separator ','\nset key outside right title 'vented fraction'\n"
+        "set xlabel 'hot-air temperature [degC]'\nset grid\n";
+    std::ostringstream scorchLine;
+    plotPng(dir + "/whatif_time.png",
+            common + "set ylabel 'drying time [h]'\nset title 'batch " + b.id
+                + " (filled: scorched, T_product > " + num(plant.base.scorchC, 0) + " degC)'\n"
+                "plot for [i=0:" + std::to_string(plant.whatifVentedFractions.size() - 1)
+                + "] '" + f + "' index i u 1:4 w lp pt 6 t columnhead(2), "
+                "for [i=0:" + std::to_string(plant.whatifVentedFractions.size() - 1) + "] '" + f
+                + "' index i u 1:($9>0.5?$4:1/0) w p pt 7 ps 2 lc rgb 'red' notitle\n");
+    plotPng(dir + "/whatif_energy.png",
+            common + "set ylabel 'specific energy E [kJ/kg water]'\nset title 'batch " + b.id
+                + " (filled: scorched)'\n"
+                "plot for [i=0:" + std::to_string(plant.whatifVentedFractions.size() - 1)
+                + "] '" + f + "' index i u 1:6 w lp pt 6 t sprintf('%g', column(2)), "
+                "for [i=0:" + std::to_string(plant.whatifVentedFractions.size() - 1) + "] '" + f
+                + "' index i u 1:($9>0.5?$6:1/0) w p pt 7 ps 2 lc rgb 'red' notitle\n");
+    std::cout << "\nscorch limit: product temperature " << num(plant.base.scorchC, 1) << " degC\n";
+    if (best.empty())
+        std::cout << "best setting: none reaches the target without scorching\n";
+    else
+        std::cout << "best setting (lowest E without scorching): " << best << "\n";
+    std::cout << "wrote " << dir << "/whatif.csv, whatif_time.png, whatif_energy.png\n";
+    return 0;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    if (argc < 2 || isHelp(argv[1]))
+    {
+        std::cout << kUsage;
+        return argc < 2 ? 2 : 0;
+    }
+    const std::string cmd = argv[1];
+    if (cmd == "metrics") return runMetrics(argc - 1, argv + 1);
+    if (cmd == "psychro") return runPsychro(argc - 1, argv + 1);
+    if (cmd == "simulate") return runSimulate(argc - 1, argv + 1);
+    if (cmd == "calibrate") return runCalibrate(argc - 1, argv + 1);
+    if (cmd == "whatif") return runWhatif(argc - 1, argv + 1);
+    throw InputError("dryer: unknown command '" + cmd + "' (metrics, psychro, simulate, calibrate, whatif)");
+}
+
+} // namespace procsim::dryer

@@ -1,0 +1,415 @@
+#include "dryer/Plant.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+#include "common/Cli.hpp"
+#include "common/YamlInput.hpp"
+#include "dryer/Metrics.hpp"
+#include "dryer/Psychrometrics.hpp"
+
+namespace procsim::dryer
+{
+
+namespace
+{
+
+std::string fmt(double v)
+{
+    std::ostringstream os;
+    os << std::setprecision(10) << v;
+    return os.str();
+}
+
+std::vector<double> positiveList(const YamlInput& in, const std::string& key, std::size_t size,
+                                 const std::string& what)
+{
+    const auto v = in.numbers(key);
+    if (v.size() != size)
+        throw in.error(key, "a list of " + std::to_string(size) + " " + what);
+    for (double x : v)
+        if (!(x > 0)) throw in.error(key, "positive relative air shares");
+    return v;
+}
+
+double fraction(const YamlInput& in, const std::string& key, double lo, double hi,
+                const std::string& what)
+{
+    const double v = in.number(key);
+    if (!(v >= lo && v <= hi)) throw in.error(key, what);
+    return v;
+}
+
+void readDryer(const YamlInput& d, DryerCase& c)
+{
+    d.rejectUnknown({"carts", "trays_per_cart", "pieces_per_tray", "air_holdup_kg",
+                     "wall_UA_W_per_K", "heater_power_kW", "fan_power_kW",
+                     "circulation_kg_per_s", "heat_transfer_coefficient_W_per_m2K",
+                     "velocity_exponent", "air_distribution"});
+    auto count = [&](const std::string& key) {
+        const long v = d.integer(key);
+        if (v < 1 || v > 1000) throw d.error(key, "an integer from 1 to 1000");
+        return static_cast<int>(v);
+    };
+    c.carts = count("carts");
+    c.traysPerCart = count("trays_per_cart");
+    c.piecesPerTray = count("pieces_per_tray");
+    c.airHoldup = d.positive("air_holdup_kg", "kg");
+    c.wallUA = d.nonNegative("wall_UA_W_per_K", "W/K");
+    c.heaterPower = d.positive("heater_power_kW", "kW") * 1e3;
+    c.fanPower = d.nonNegative("fan_power_kW", "kW") * 1e3;
+    c.circulation = d.positive("circulation_kg_per_s", "kg dry air/s");
+    c.hConv = d.positive("heat_transfer_coefficient_W_per_m2K", "W/(m2 K)");
+    c.velocityExponent = d.nonNegative("velocity_exponent");
+    c.cartFactors.clear();
+    c.trayFactors.clear();
+    if (d.has("air_distribution"))
+    {
+        const YamlInput a = d.child("air_distribution");
+        a.rejectUnknown({"cart_factors", "tray_factors"});
+        if (a.has("cart_factors"))
+            c.cartFactors = positiveList(a, "cart_factors", static_cast<std::size_t>(c.carts),
+                                         "air shares, one per cart");
+        if (a.has("tray_factors"))
+            c.trayFactors = positiveList(a, "tray_factors",
+                                         static_cast<std::size_t>(c.traysPerCart),
+                                         "air shares, one per tray (top first)");
+    }
+}
+
+void readProduct(const YamlInput& p, DryerCase& c)
+{
+    p.rejectUnknown({"piece_diameter_mm", "piece_length_m", "specific_heat_dry_J_per_kgK",
+                     "scorch_temperature_C"});
+    c.pieceDiameter = p.positive("piece_diameter_mm", "mm") / 1e3;
+    c.pieceLength = p.positive("piece_length_m", "m");
+    c.cpDry = p.positive("specific_heat_dry_J_per_kgK", "J/(kg K)");
+    c.scorchC = p.number("scorch_temperature_C", "degC");
+}
+
+void readKinetics(const YamlInput& k, DryerCase& c)
+{
+    k.rejectUnknown({"critical_moisture_percent_db", "equilibrium_moisture_percent_db",
+                     "falling_rate_exponent"});
+    c.xCritical = k.positive("critical_moisture_percent_db", "% dry basis") / 100.0;
+    c.xEquilibrium = k.nonNegative("equilibrium_moisture_percent_db", "% dry basis") / 100.0;
+    if (!(c.xEquilibrium < c.xCritical))
+        throw k.error("equilibrium_moisture_percent_db",
+                      "a value below critical_moisture_percent_db");
+    c.fallingExponent = k.positive("falling_rate_exponent");
+}
+
+void readOperation(const YamlInput& o, DryerCase& c)
+{
+    o.rejectUnknown({"ambient_temperature_C", "ambient_relative_humidity_percent",
+                     "pressure_kPa"});
+    c.pressure = o.positive("pressure_kPa", "kPa") * 1e3;
+    c.ambientC = o.number("ambient_temperature_C", "degC");
+    if (!(c.ambientC >= 0 && c.ambientC <= 60))
+        throw o.error("ambient_temperature_C", "an ambient temperature from 0 to 60 degC");
+    c.ambientRH = fraction(o, "ambient_relative_humidity_percent", 0, 100,
+                           "a relative humidity from 0 to 100 %")
+                  / 100.0;
+    if (c.ambientRH * psy::saturationPressure(c.ambientC) >= c.pressure)
+        throw o.error("pressure_kPa", "a pressure above the ambient vapour pressure");
+}
+
+Venting readVenting(const YamlInput& v)
+{
+    v.rejectUnknown({"vented_fraction", "vent_short_circuit_fraction"});
+    Venting out;
+    out.ventedFraction = fraction(v, "vented_fraction", 0, 1,
+                                  "a fraction of the circulated air from 0 to 1");
+    out.shortCircuit = fraction(v, "vent_short_circuit_fraction", 0, 1,
+                                "a fraction of the vented air from 0 to 1");
+    return out;
+}
+
+} // namespace
+
+std::vector<std::string> Plant::parameterNames()
+{
+    return {"heat_transfer_coefficient_W_per_m2K", "falling_rate_exponent",
+            "critical_moisture_percent_db", "wall_UA_W_per_K",
+            "venting.<name>.vented_fraction", "venting.<name>.vent_short_circuit_fraction"};
+}
+
+double Plant::get(const std::string& name) const
+{
+    if (name == "heat_transfer_coefficient_W_per_m2K") return base.hConv;
+    if (name == "falling_rate_exponent") return base.fallingExponent;
+    if (name == "critical_moisture_percent_db") return base.xCritical * 100;
+    if (name == "wall_UA_W_per_K") return base.wallUA;
+    if (name.rfind("venting.", 0) == 0)
+    {
+        const auto dot = name.find('.', 8);
+        const std::string v = name.substr(8, dot - 8), field = name.substr(dot + 1);
+        const auto it = venting.find(v);
+        if (it != venting.end() && dot != std::string::npos)
+        {
+            if (field == "vented_fraction") return it->second.ventedFraction;
+            if (field == "vent_short_circuit_fraction") return it->second.shortCircuit;
+        }
+    }
+    throw std::invalid_argument(name);
+}
+
+void Plant::set(const std::string& name, double value)
+{
+    if (name == "heat_transfer_coefficient_W_per_m2K")
+        base.hConv = value;
+    else if (name == "falling_rate_exponent")
+        base.fallingExponent = value;
+    else if (name == "critical_moisture_percent_db")
+        base.xCritical = value / 100;
+    else if (name == "wall_UA_W_per_K")
+        base.wallUA = value;
+    else
+    {
+        get(name);   // validates
+        const auto dot = name.find('.', 8);
+        Venting& v = venting[name.substr(8, dot - 8)];
+        if (name.substr(dot + 1) == "vented_fraction")
+            v.ventedFraction = value;
+        else
+            v.shortCircuit = value;
+    }
+}
+
+const BatchSpec& Plant::batch(const std::string& id) const
+{
+    for (const auto& b : batches)
+        if (b.id == id) return b;
+    std::string ids;
+    for (const auto& b : batches) ids += (ids.empty() ? "" : ", ") + b.id;
+    throw InputError(file + ": no batch '" + id + "' (batches: " + ids + ")");
+}
+
+DryerCase Plant::caseFor(const BatchSpec& b) const
+{
+    return caseFor(b, b.venting);
+}
+
+DryerCase Plant::caseFor(const BatchSpec& b, const std::string& ventingName) const
+{
+    DryerCase c = base;
+    c.name = b.id;
+    const auto it = venting.find(ventingName);
+    if (it == venting.end())
+        throw InputError(file + ": venting '" + ventingName + "' is not defined under 'venting'");
+    c.ventedFraction = it->second.ventedFraction;
+    c.ventShortCircuit = it->second.shortCircuit;
+    c.hotAirC = b.hotAirC;
+    c.dryMass = b.dryMass;
+    c.x0 = b.x0;
+    c.xTarget = b.xTarget;
+    c.x0Spread = b.x0Spread;
+    c.seed = b.seed;
+    return c;
+}
+
+Plant readPlant(const std::string& path)
+{
+    const YamlInput in = YamlInput::load(path);
+    in.rejectUnknown({"dryer", "product", "kinetics", "operation", "venting", "batches",
+                      "calibration", "whatif", "run"});
+    Plant p;
+    p.file = path;
+    readDryer(in.child("dryer"), p.base);
+    readProduct(in.child("product"), p.base);
+    readKinetics(in.child("kinetics"), p.base);
+    readOperation(in.child("operation"), p.base);
+    if (in.has("run"))
+    {
+        const YamlInput r = in.child("run");
+        r.rejectUnknown({"max_time_h", "output_interval_min"});
+        p.base.maxTime = r.positive("max_time_h", "h") * 3600;
+        p.base.outputInterval = r.positive("output_interval_min", "min") * 60;
+    }
+    const YamlInput v = in.child("venting");
+    for (const auto& name : v.keys()) p.venting[name] = readVenting(v.child(name));
+    if (p.venting.empty()) throw in.error("venting", "at least one named venting arrangement");
+
+    for (const YamlInput& b : in.child("batches").items())
+    {
+        b.rejectUnknown({"id", "venting", "hot_air_temperature_C", "dry_mass_kg",
+                         "initial_moisture_percent_db", "target_moisture_percent_db",
+                         "initial_moisture_spread_percent", "pattern_seed", "measured", "note"});
+        BatchSpec s;
+        s.id = b.text("id");
+        s.venting = b.text("venting");
+        if (!p.venting.count(s.venting))
+            throw b.error("venting", "the name of an arrangement under 'venting'");
+        s.hotAirC = b.number("hot_air_temperature_C", "degC");
+        if (!(s.hotAirC > p.base.ambientC))
+            throw b.error("hot_air_temperature_C",
+                          "a set-point above the ambient " + fmt(p.base.ambientC) + " degC");
+        if (!(s.hotAirC <= 150))
+            throw b.error("hot_air_temperature_C", "a set-point of at most 150 degC");
+        s.dryMass = b.positive("dry_mass_kg", "kg");
+        s.x0 = b.positive("initial_moisture_percent_db", "% dry basis") / 100;
+        s.xTarget = b.positive("target_moisture_percent_db", "% dry basis") / 100;
+        if (!(s.xTarget < s.x0))
+            throw b.error("target_moisture_percent_db",
+                          "a value below initial_moisture_percent_db (" + fmt(s.x0 * 100) + ")");
+        if (!(s.xTarget > p.base.xEquilibrium))
+            throw b.error("target_moisture_percent_db",
+                          "a value above the equilibrium moisture "
+                              + fmt(p.base.xEquilibrium * 100) + " % (never reached otherwise)");
+        s.x0Spread = b.has("initial_moisture_spread_percent")
+                         ? b.nonNegative("initial_moisture_spread_percent", "%") / 100
+                         : 0.0;
+        s.seed = static_cast<unsigned>(b.has("pattern_seed") ? b.integer("pattern_seed") : 1);
+        if (b.has("measured"))
+        {
+            const YamlInput m = b.child("measured");
+            m.rejectUnknown({"drying_time", "electricity_kWh", "f1_percent", "f2_percent"});
+            if (m.has("drying_time"))
+            {
+                try
+                {
+                    s.measuredTime = parseHoursMinutes(m.text("drying_time"));
+                }
+                catch (const std::invalid_argument&)
+                {
+                    throw m.error("drying_time", "hours:minutes such as '11:50'");
+                }
+            }
+            if (m.has("electricity_kWh"))
+                s.measuredElectricity = m.positive("electricity_kWh", "kWh") * 3.6e6;
+            if (m.has("f1_percent")) s.measuredF1 = m.nonNegative("f1_percent", "%");
+            if (m.has("f2_percent")) s.measuredF2 = m.nonNegative("f2_percent", "%");
+        }
+        p.batches.push_back(s);
+    }
+    if (p.batches.empty()) throw in.error("batches", "a non-empty list of batches");
+
+    if (in.has("calibration"))
+    {
+        const YamlInput c = in.child("calibration");
+        c.rejectUnknown({"fit", "calibrate_on", "predict", "predict_venting"});
+        for (const YamlInput& f : c.child("fit").items())
+        {
+            f.rejectUnknown({"parameter", "lower", "upper"});
+            FitParameter fp;
+            fp.name = f.text("parameter");
+            try
+            {
+                p.get(fp.name);
+            }
+            catch (const std::invalid_argument&)
+            {
+                std::string list;
+                for (const auto& n : Plant::parameterNames()) list += (list.empty() ? "" : ", ") + n;
+                throw f.error("parameter", "one of " + list);
+            }
+            fp.lower = f.number("lower");
+            fp.upper = f.number("upper");
+            if (!(fp.lower < fp.upper)) throw f.error("upper", "a value above 'lower'");
+            p.fit.push_back(fp);
+        }
+        for (const YamlInput& id : c.child("calibrate_on").items())
+            p.calibrateOn.push_back(id.node().as<std::string>());
+        for (const YamlInput& id : c.child("predict").items())
+            p.predict.push_back(id.node().as<std::string>());
+        p.predictVenting = c.text("predict_venting");
+        if (!p.venting.count(p.predictVenting))
+            throw c.error("predict_venting", "the name of an arrangement under 'venting'");
+        for (const auto& id : p.calibrateOn) p.batch(id);
+        for (const auto& id : p.predict) p.batch(id);
+    }
+    if (in.has("whatif"))
+    {
+        const YamlInput w = in.child("whatif");
+        w.rejectUnknown({"batch", "venting", "hot_air_temperatures_C", "vented_fractions"});
+        p.whatifBatch = w.text("batch");
+        p.batch(p.whatifBatch);
+        p.whatifVenting = w.text("venting");
+        if (!p.venting.count(p.whatifVenting))
+            throw w.error("venting", "the name of an arrangement under 'venting'");
+        p.whatifTemperatures = w.numbers("hot_air_temperatures_C", "degC");
+        for (double t : p.whatifTemperatures)
+            if (!(t > p.base.ambientC && t <= 150))
+                throw w.error("hot_air_temperatures_C", "set-points above ambient and <= 150 degC");
+        p.whatifVentedFractions = w.numbers("vented_fractions");
+        for (double f : p.whatifVentedFractions)
+            if (!(f >= 0 && f <= 1)) throw w.error("vented_fractions", "fractions from 0 to 1");
+    }
+    return p;
+}
+
+void writePlant(const Plant& p, const std::string& path, const std::string& comment)
+{
+    std::ofstream o(path);
+    if (!o) throw InputError(path + ": cannot be written");
+    const DryerCase& c = p.base;
+    auto list = [](const std::vector<double>& v) {
+        std::string s = "[";
+        for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + fmt(v[i]);
+        return s + "]";
+    };
+    o << "# " << comment << "\n";
+    o << "dryer:\n  carts: " << c.carts << "\n  trays_per_cart: " << c.traysPerCart
+      << "\n  pieces_per_tray: " << c.piecesPerTray << "\n  air_holdup_kg: " << fmt(c.airHoldup)
+      << "\n  wall_UA_W_per_K: " << fmt(c.wallUA) << "\n  heater_power_kW: "
+      << fmt(c.heaterPower / 1e3) << "\n  fan_power_kW: " << fmt(c.fanPower / 1e3)
+      << "\n  circulation_kg_per_s: " << fmt(c.circulation)
+      << "\n  heat_transfer_coefficient_W_per_m2K: " << fmt(c.hConv)
+      << "\n  velocity_exponent: " << fmt(c.velocityExponent) << "\n";
+    if (!c.cartFactors.empty() || !c.trayFactors.empty())
+    {
+        o << "  air_distribution:\n";
+        if (!c.cartFactors.empty()) o << "    cart_factors: " << list(c.cartFactors) << "\n";
+        if (!c.trayFactors.empty()) o << "    tray_factors: " << list(c.trayFactors) << "\n";
+    }
+    o << "product:\n  piece_diameter_mm: " << fmt(c.pieceDiameter * 1e3)
+      << "\n  piece_length_m: " << fmt(c.pieceLength)
+      << "\n  specific_heat_dry_J_per_kgK: " << fmt(c.cpDry)
+      << "\n  scorch_temperature_C: " << fmt(c.scorchC) << "\n";
+    o << "kinetics:\n  critical_moisture_percent_db: " << fmt(c.xCritical * 100)
+      << "\n  equilibrium_moisture_percent_db: " << fmt(c.xEquilibrium * 100)
+      << "\n  falling_rate_exponent: " << fmt(c.fallingExponent) << "\n";
+    o << "operation:\n  ambient_temperature_C: " << fmt(c.ambientC)
+      << "\n  ambient_relative_humidity_percent: " << fmt(c.ambientRH * 100)
+      << "\n  pressure_kPa: " << fmt(c.pressure / 1e3) << "\n";
+    o << "run:\n  max_time_h: " << fmt(c.maxTime / 3600)
+      << "\n  output_interval_min: " << fmt(c.outputInterval / 60) << "\n";
+    o << "venting:\n";
+    for (const auto& [name, v] : p.venting)
+        o << "  " << name << ": {vented_fraction: " << fmt(v.ventedFraction)
+          << ", vent_short_circuit_fraction: " << fmt(v.shortCircuit) << "}\n";
+    o << "batches:\n";
+    for (const auto& b : p.batches)
+    {
+        o << "  - id: \"" << b.id << "\"\n    venting: " << b.venting
+          << "\n    hot_air_temperature_C: " << fmt(b.hotAirC) << "\n    dry_mass_kg: "
+          << fmt(b.dryMass) << "\n    initial_moisture_percent_db: " << fmt(b.x0 * 100)
+          << "\n    target_moisture_percent_db: " << fmt(b.xTarget * 100)
+          << "\n    initial_moisture_spread_percent: " << fmt(b.x0Spread * 100)
+          << "\n    pattern_seed: " << b.seed << "\n";
+        if (b.measuredTime || b.measuredElectricity || b.measuredF1 || b.measuredF2)
+        {
+            o << "    measured:\n";
+            if (b.measuredTime)
+            {
+                const long m = std::lround(*b.measuredTime / 60);
+                o << "      drying_time: \"" << m / 60 << ":" << std::setw(2) << std::setfill('0')
+                  << m % 60 << std::setfill(' ') << "\"\n";
+            }
+            if (b.measuredElectricity)
+                o << "      electricity_kWh: " << fmt(*b.measuredElectricity / 3.6e6) << "\n";
+            if (b.measuredF1) o << "      f1_percent: " << fmt(*b.measuredF1) << "\n";
+            if (b.measuredF2) o << "      f2_percent: " << fmt(*b.measuredF2) << "\n";
+        }
+    }
+    if (!p.whatifBatch.empty())
+    {
+        o << "whatif:\n  batch: \"" << p.whatifBatch << "\"\n  venting: " << p.whatifVenting
+          << "\n  hot_air_temperatures_C: " << list(p.whatifTemperatures)
+          << "\n  vented_fractions: " << list(p.whatifVentedFractions) << "\n";
+    }
+}
+
+} // namespace procsim::dryer
