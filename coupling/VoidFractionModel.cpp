@@ -73,14 +73,16 @@ std::vector<double> VoidFractionModel::voidFraction(const CellLocator& mesh,
 }
 
 VoidFractionResult VoidFractionModel::compute(const CellLocator& mesh,
-                                              const std::vector<Particle>& particles) const {
+                                              const std::vector<Particle>& particles,
+                                              const std::vector<label>& centreHints) const {
+  const bool hinted = centreHints.size() == particles.size();
   VoidFractionResult result;
   result.solidVolume.assign(static_cast<std::size_t>(mesh.nCells()), 0.0);
   result.centreCell.resize(particles.size());
   std::vector<CellWeight> row;
   for (std::size_t n = 0; n < particles.size(); ++n) {
     const Particle& p = particles[n];
-    const label centre = mesh.findCell(p.x, -1);
+    const label centre = mesh.findCell(p.x, hinted ? centreHints[n] : -1);
     result.centreCell[n] = centre;
     row.clear();
     if (centre < 0) {

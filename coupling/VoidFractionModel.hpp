@@ -69,7 +69,11 @@ class VoidFractionModel {
 
   virtual std::string name() const = 0;
 
-  VoidFractionResult compute(const CellLocator& mesh, const std::vector<Particle>& particles) const;
+  // centreHints: optional, per particle, a cell near its centre (e.g. last
+  // step's centreCell); particles move less than a cell per coupling step,
+  // so a hint saves the octree search.
+  VoidFractionResult compute(const CellLocator& mesh, const std::vector<Particle>& particles,
+                             const std::vector<label>& centreHints = {}) const;
 
   double voidFractionMin() const { return voidFractionMin_; }
   std::vector<double> voidFraction(const CellLocator& mesh,

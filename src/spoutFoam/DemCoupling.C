@@ -262,6 +262,7 @@ void DemCoupling::startDem()
     input.expand();
     if (!input.isAbsolute()) input = caseDir/input;
 
+    vars["inputDir"] = input.path();   // for includes beside the input
     liggghtsInput_ = input;
     dem_.reset
     (
@@ -310,7 +311,8 @@ void DemCoupling::checkTimeSteps() const
 VoidFractionResult DemCoupling::mapParticles()
 {
     dem_->gather(particles_);
-    VoidFractionResult vf = voidFractionModel_->compute(locator_, particles_);
+    VoidFractionResult vf =
+        voidFractionModel_->compute(locator_, particles_, centreCells_);
 
     // A particle is lost only if no processor found its centre.
     std::vector<int> found(particles_.size());
@@ -350,6 +352,7 @@ VoidFractionResult DemCoupling::mapParticles()
         vf = voidFractionModel_->compute(locator_, particles_);
     }
 
+    centreCells_ = vf.centreCell;   // hints for the next step
     const std::vector<double> eps =
         voidFractionModel_->voidFraction(locator_, vf.solidVolume);
     Foam::scalarField& field = voidfraction_.primitiveFieldRef();

@@ -62,9 +62,10 @@ int main(int argc, char *argv[])
 
             coupling.evolve();
 
+            // PISO: one momentum predictor, then the pressure correctors
+            #include "UEqn.H"
             while (piso.correct())
             {
-                #include "UEqn.H"
                 #include "pEqn.H"
             }
 
