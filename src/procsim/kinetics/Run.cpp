@@ -252,7 +252,7 @@ void writeRun(const Results& r, const Efficiency& e, const std::string& dir, boo
     if (!plots) return;
     const std::string csvPath = dir + "/timeseries.csv";
     std::ostringstream gp;
-    gp << "set datafile separator ','\nset key outside right\nset grid\nset xlabel 'time (h)'\n"
+    gp << "set termoption noenhanced\nset datafile separator ','\nset key outside right\nset grid\nset xlabel 'time (h)'\n"
           "set ylabel 'concentration (mg/L)'\nset title '" << r.cas.title << ": species'\nplot ";
     const auto names = plotSpecies(r);
     for (std::size_t k = 0; k < names.size(); ++k)
@@ -264,7 +264,7 @@ void writeRun(const Results& r, const Efficiency& e, const std::string& dir, boo
     plotPng(dir + "/species.png", gp.str());
     std::ostringstream gt;
     const std::size_t tocCol = 3 + 2 * sp.size();
-    gt << "set datafile separator ','\nset grid\nset xlabel 'time (h)'\nset ylabel 'TOC (mg C/L)'\n"
+    gt << "set termoption noenhanced\nset datafile separator ','\nset grid\nset xlabel 'time (h)'\nset ylabel 'TOC (mg C/L)'\n"
           "set title '" << r.cas.title << ": TOC'\nplot '" << csvPath << "' using 1:" << tocCol
        << " with lines lw 2 title 'TOC', '' using 1:" << tocCol + 1 << " with lines dt 2 title 'TOC without discharge'\n";
     plotPng(dir + "/toc.png", gt.str());

@@ -102,7 +102,7 @@ std::vector<SweepRun> runSweep(const CaseSource& src, const Overrides& set, cons
     {
         const std::size_t col = n == "TOC" ? 3 + 2 * sp.size() : 3 + first.cas.mech.index(n, "plot");
         std::ostringstream gp;
-        gp << "set datafile separator ','\nset grid\nset key outside right\nset xlabel 'time (h)'\nset ylabel '" << n
+        gp << "set termoption noenhanced\nset datafile separator ','\nset grid\nset key outside right\nset xlabel 'time (h)'\nset ylabel '" << n
            << (n == "TOC" ? " (mg C/L)" : " (mg/L)") << "'\nset title '" << first.cas.title << ": " << n << "'\nplot ";
         for (std::size_t k = 0; k < runs.size(); ++k)
             gp << (k ? ", " : "") << "'" << dir << "/" << runs[k].label << "/timeseries.csv' using 1:" << col
@@ -118,7 +118,7 @@ std::vector<SweepRun> runSweep(const CaseSource& src, const Overrides& set, cons
         {
             const std::size_t col = nd + 1 + it * names.size() + q;
             std::ostringstream gp;
-            gp << "set datafile separator ','\nset grid\nset key outside right\nset xlabel '" << shortKey(dims.back().key)
+            gp << "set termoption noenhanced\nset datafile separator ','\nset grid\nset key outside right\nset xlabel '" << shortKey(dims.back().key)
                << "'\nset ylabel '" << names[q] << " at " << num(times[it] / 3600.0) << " h'\nset title '" << first.cas.title
                << "'\n";
             if (nd == 1)
