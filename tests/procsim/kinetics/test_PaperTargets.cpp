@@ -112,23 +112,31 @@ TEST(KineticsPaper, Fig7CatecholIsTheMajorIntermediateAndAceticAcidTheMajorStabl
     EXPECT_GT(aa / r.value("TOC", t), 0.4);
 }
 
-TEST(KineticsPaper, SensitivityK3DominatesAceticAcid)
+TEST(KineticsPaper, SensitivityTableS1)
 {
-    // Table S1 (text): k3 has the largest effect on acetic acid; k8 is the one of the six
-    // fitted constants that moves phenol; phenol is untouched by the acetaldehyde branch
+    // Table S1 as summarised in the text (+-10 % on k1, k2, k3, k4, k8, k12): phenol deviates by
+    // ca. +-6 % with k8; acetaldehyde by ca. +-5-6 % with k1 and +-4-4.5 % with k2; k3 has the
+    // largest effect on acetic acid, ca. 13 %.  Evaluated at the end of the 10 h runs.
     const CaseSource src = CaseSource::load(kt::casesDir() + "/base_0.3mA_30mgL_30ppm.yaml");
-    const auto rows = sensitivity(src, {}, {"k1", "k2", "k3", "k4", "k8", "k12"}, {"PH", "AA"}, 8 * 3600.0, 0.1);
-    double aaK3 = 0, aaOther = 0, phK8 = 0, phOther = 0;
-    for (const auto& r : rows)
+    const auto rows = sensitivity(src, {}, {"k1", "k2", "k3", "k4", "k8", "k12"}, {"PH", "AD", "AA"}, 10 * 3600.0, 0.1);
+    auto dev = [&](const std::string& k, const std::string& out, double change) {
+        for (const auto& r : rows)
+            if (r.parameter == k && r.output == out && r.change == change) return r.deviation;
+        ADD_FAILURE() << k << " " << out;
+        return 0.0;
+    };
+    for (double c : {0.1, -0.1})
     {
-        const double d = std::fabs(r.deviation);
-        if (r.output == "AA") (r.parameter == "k3" ? aaK3 : aaOther) = std::max(r.parameter == "k3" ? aaK3 : aaOther, d);
-        if (r.output == "PH") (r.parameter == "k8" ? phK8 : phOther) = std::max(r.parameter == "k8" ? phK8 : phOther, d);
-        if (r.output == "AA" && r.parameter == "k3") EXPECT_LT(r.deviation * r.change, 0.0);   // faster k3, less AA
+        EXPECT_NEAR(std::fabs(dev("k8", "PH", c)), 0.06, 0.01);
+        EXPECT_NEAR(std::fabs(dev("k1", "AD", c)), 0.055, 0.01);
+        EXPECT_NEAR(std::fabs(dev("k2", "AD", c)), 0.0425, 0.01);
+        EXPECT_NEAR(std::fabs(dev("k3", "AA", c)), 0.13, 0.025);
+        EXPECT_LT(dev("k3", "AA", c) * c, 0.0);   // faster acetic acid oxidation, less acetic acid
+        for (const char* k : {"k1", "k2", "k4", "k8", "k12"})
+            EXPECT_GT(std::fabs(dev("k3", "AA", c)), std::fabs(dev(k, "AA", c))) << k;
+        // phenol is untouched by the acetaldehyde branch and by its products' constants
+        for (const char* k : {"k1", "k2", "k3", "k4", "k12"}) EXPECT_EQ(dev(k, "PH", c), 0.0) << k;
     }
-    EXPECT_GT(aaK3, aaOther);
-    EXPECT_GT(phK8, 0.0);
-    EXPECT_EQ(phOther, 0.0);
 }
 
 TEST(KineticsPaper, EnergeticEfficienciesFollowEqs18to20)
