@@ -277,7 +277,7 @@ double Transport::stableDt() const
                 double diff = 0;
                 if (nx > 1) diff += kH_ / (g.dx * g.dx);
                 if (ny > 1) diff += kH_ / (g.dy * g.dy);
-                if (nz > 1) diff += (kV_ + kH_ * slope2) / (dz * dz);
+                if (nz > 1 && !implicit_) diff += (kV_ + kH_ * slope2) / (dz * dz);
                 const std::size_t ix = (static_cast<std::size_t>(k) * ny + j) * (nx + 1) + i;
                 const std::size_t iy = (static_cast<std::size_t>(k) * (ny + 1) + j) * nx + i;
                 const std::size_t is = (static_cast<std::size_t>(k) * ny + j) * nx + i;
@@ -438,7 +438,7 @@ void Transport::residual(std::vector<double>& r)
                     cf = faceValue(scheme_, k >= 2 ? c[nL - nxy] : c[nL], c[nL], c[nR]);
                 else
                     cf = faceValue(scheme_, k + 1 < nz ? c[nR + nxy] : c[nR], c[nR], c[nL]);
-                phi = F * cf - asF_[f] * (c[nR] - c[nL])
+                phi = F * cf - (implicit_ ? 0.0 : asF_[f]) * (c[nR] - c[nL])
                       + bsxF_[f] * 0.5 * (gxs_[nL] + gxs_[nR]) + bsyF_[f] * 0.5 * (gys_[nL] + gys_[nR]);
                 r[nL] -= phi;
                 r[nR] += phi;
@@ -450,18 +450,54 @@ void Transport::step(double dt)
 {
     residual(r_);
     const double outPrev = prevOut_;
-    if (first_)
+    const double wNew = first_ ? 1.0 : 1.5, wOld = first_ ? 0.0 : -0.5;
+    if (!implicit_)
     {
-        for (std::size_t n = 0; n < c.size(); ++n) c[n] += dt * r_[n] / vol_[n];
-        outflow_ += dt * lastOut_;
-        first_ = false;
+        for (std::size_t n = 0; n < c.size(); ++n)
+            c[n] += dt * (wNew * r_[n] + wOld * rPrev_[n]) / vol_[n];
     }
     else
     {
-        for (std::size_t n = 0; n < c.size(); ++n)
-            c[n] += dt * (1.5 * r_[n] - 0.5 * rPrev_[n]) / vol_[n];
-        outflow_ += dt * (1.5 * lastOut_ - 0.5 * outPrev);
+        // Crank-Nicolson for the vertical diffusion, column by column:
+        //  (V/dt) C' - 1/2 I(C') = (V/dt) C + AB2(R) + 1/2 I(C)
+        const TerrainGrid& g = g_;
+        const int nz = g.nz;
+        const std::size_t nxy = static_cast<std::size_t>(g.nx) * g.ny;
+        rhsCol_.resize(nz);
+        aCol_.resize(nz);
+        bCol_.resize(nz);
+        cCol_.resize(nz);
+        for (std::size_t col = 0; col < nxy; ++col)
+        {
+            for (int k = 0; k < nz; ++k)
+            {
+                const std::size_t n = col + k * nxy;
+                const double aDn = k > 0 ? 0.5 * asF_[col + k * nxy] : 0.0;
+                const double aUp = k + 1 < nz ? 0.5 * asF_[col + (k + 1) * nxy] : 0.0;
+                const double vdt = vol_[n] / dt;
+                double rhs = vdt * c[n] + wNew * r_[n] + wOld * rPrev_[n];
+                if (k > 0) rhs += aDn * (c[n - nxy] - c[n]);
+                if (k + 1 < nz) rhs += aUp * (c[n + nxy] - c[n]);
+                aCol_[k] = -aDn;
+                bCol_[k] = vdt + aDn + aUp;
+                cCol_[k] = -aUp;
+                rhsCol_[k] = rhs;
+            }
+            // Thomas algorithm (diagonally dominant)
+            for (int k = 1; k < nz; ++k)
+            {
+                const double m = aCol_[k] / bCol_[k - 1];
+                bCol_[k] -= m * cCol_[k - 1];
+                rhsCol_[k] -= m * rhsCol_[k - 1];
+            }
+            rhsCol_[nz - 1] /= bCol_[nz - 1];
+            for (int k = nz - 2; k >= 0; --k)
+                rhsCol_[k] = (rhsCol_[k] - cCol_[k] * rhsCol_[k + 1]) / bCol_[k];
+            for (int k = 0; k < nz; ++k) c[col + k * nxy] = rhsCol_[k];
+        }
     }
+    outflow_ += dt * (wNew * lastOut_ + wOld * outPrev);
+    first_ = false;
     prevOut_ = lastOut_;
     std::swap(r_, rPrev_);
     time_ += dt;

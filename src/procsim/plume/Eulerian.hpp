@@ -19,6 +19,11 @@
 //                terrain, where the scheme is the Cartesian one).
 //   time       : second-order Adams-Bashforth; the very first step is forward
 //                Euler, later steps carry AB2 across the hourly wind changes.
+//                Optionally (setImplicitVertical) the direct vertical diffusion
+//                term is taken by Crank-Nicolson, one tridiagonal solve per
+//                column (IMEX AB2/CN, still second order and conservative):
+//                thin near-ground cells and K_H acting along steep terrain
+//                (K_H z_x^2 / dz^2) otherwise force sub-second steps.
 #include <memory>
 #include <string>
 #include <vector>
@@ -134,11 +139,16 @@ public:
     void setFlow(const Flow& flow);
     void setSources(std::vector<double> kgPerS);   // per cell [kg/s]
     void setBackground(double kgPerM3) { background_ = kgPerM3; }
+    void setImplicitVertical(bool on) { implicit_ = on; }
+    bool implicitVertical() const { return implicit_; }
 
     // Largest stable time step for the current flow: AB2 is stable for a
     // real eigenvalue lambda dt >= -1, so per cell
-    //   dt <= 1 / ( 4 (K_H/dx^2 + K_H/dy^2 + K_V/dz^2) + 2 (|u|/dx + |v|/dy + |w|/dz) )
-    // with dz the cell's physical thickness and |u| etc. from the face fluxes.
+    //   dt <= 1 / ( 4 (K_H/dx^2 + K_H/dy^2 + K_zz/dz^2) + sum_faces |F| / V )
+    // with dz the cell's physical thickness, K_zz = K_V + K_H |grad h|^2 (1-f)^2
+    // the vertical diffusivity of the transformed equation and sum |F| / V
+    // (= 2|u|/dx in 1D) from the face fluxes.  The K_zz term is dropped when
+    // the vertical diffusion is implicit.
     double stableDt() const;
 
     void step(double dt);
@@ -173,6 +183,8 @@ private:
     double outflow_ = 0;
     double lastOut_ = 0, prevOut_ = 0;
     bool first_ = true;
+    bool implicit_ = false;
+    std::vector<double> rhsCol_, aCol_, bCol_, cCol_;
 
     void residual(std::vector<double>& r);
 };

@@ -1,1 +1,2 @@
-// placeholder
+#include "plume/GaussianCase.hpp"
+int procsim::plume::gaussianMain(int, char**) { return 0; }

@@ -1,0 +1,5 @@
+#pragma once
+namespace procsim::plume
+{
+int gaussianMain(int argc, char** argv);
+}

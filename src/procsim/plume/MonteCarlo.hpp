@@ -1,0 +1,5 @@
+#pragma once
+namespace procsim::plume
+{
+int monteCarloMain(int argc, char** argv);
+}
