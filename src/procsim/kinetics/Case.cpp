@@ -288,6 +288,7 @@ Case CaseSource::build(const Overrides& overrides) const
             const YamlInput ps = rep.child("plot_species");
             for (const auto& s : ps.items())
             {
+                if (!s.node().IsScalar()) throw InputError(file_ + ": key '" + s.path() + "' expected a species name");
                 const std::string name = s.node().as<std::string>();
                 c.mech.index(name, file_ + ": key '" + s.path() + "'");
                 c.plotSpecies.push_back(name);
@@ -314,6 +315,7 @@ Case CaseSource::build(const Overrides& overrides) const
         if (se.has("parameters"))
             for (const auto& p : se.child("parameters").items())
             {
+                if (!p.node().IsScalar()) throw InputError(file_ + ": key '" + p.path() + "' expected a reaction id");
                 const std::string id = p.node().as<std::string>();
                 if (c.mech.reaction(id) == std::string::npos)
                     throw InputError(file_ + ": key '" + p.path() + "': no reaction with id '" + id + "'");
@@ -322,6 +324,7 @@ Case CaseSource::build(const Overrides& overrides) const
         if (se.has("outputs"))
             for (const auto& p : se.child("outputs").items())
             {
+                if (!p.node().IsScalar()) throw InputError(file_ + ": key '" + p.path() + "' expected a species name or TOC");
                 const std::string o = p.node().as<std::string>();
                 if (o != "TOC") c.mech.index(o, file_ + ": key '" + p.path() + "'");
                 c.sensOutputs.push_back(o);

@@ -377,10 +377,10 @@ int fitMain(int argc, char** argv)
     plotPng(dir + "/fit_parity.png",
             "set termoption noenhanced\nset datafile separator ','\nset grid\nset xlabel 'measured (mg/L)'\nset ylabel 'predicted (mg/L)'\n"
             "set title 'goodness of fit: R^2 = " + num(r.r2, 4) + "'\nset size square\nplot '" + res +
-                "' using 4:5 every ::1 with points pt 7 title 'data', x with lines dt 2 title 'y = x'\n");
+                "' using 4:5 with points pt 7 title 'data', x with lines dt 2 title 'y = x'\n");
     plotPng(dir + "/fit_residuals.png",
             "set termoption noenhanced\nset datafile separator ','\nset grid\nset xlabel 'time (h)'\nset ylabel 'measured - predicted (mg/L)'\n"
-            "set title 'residuals'\nplot '" + res + "' using 2:6 every ::1 with points pt 7 title 'residual', 0 with lines dt 2 notitle\n");
+            "set title 'residuals'\nplot '" + res + "' using 2:6 with points pt 7 title 'residual', 0 with lines dt 2 notitle\n");
     return 0;
 }
 

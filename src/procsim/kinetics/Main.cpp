@@ -250,11 +250,7 @@ int cmdRun(int argc, char** argv)
     const std::string dir = a.output.empty() ? defaultDir(src.file(), "_out") : a.output;
     std::vector<SweepDim> sweeps = a.sweeps;
     if (sweeps.empty() && !a.noSweep) sweeps = c.sweep;
-    if (!a.solver.empty())
-    {
-        // the solver is a case key like any other: route it through the case
-        c.solver.method = a.solver;
-    }
+    if (!a.solver.empty()) c.solver.method = a.solver;
     if (sweeps.empty())
     {
         const Model model(c);
@@ -266,9 +262,10 @@ int cmdRun(int argc, char** argv)
         return 0;
     }
     if (sweeps.size() > 2) throw InputError("kinetics run: at most two --sweep keys");
-    if (!a.solver.empty()) throw InputError("kinetics run: --solver cannot be combined with a sweep; set solver.method in the case");
-    const auto runs = runSweep(src, a.set, sweeps, dir, !a.noPlots, a.quiet);
-    std::cout << runs.size() << " runs; table: " << dir << "/sweep_summary.csv, plots: " << dir << "/family_*.png\n";
+    const auto runs = runSweep(src, a.set, sweeps, dir, !a.noPlots, a.quiet, a.solver);
+    std::cout << runs.size() << " runs; table: " << dir << "/sweep_summary.csv";
+    if (!a.noPlots) std::cout << ", plots: " << dir << "/family_*.png, " << dir << "/sweep_*.png";
+    std::cout << '\n';
     return 0;
 }
 

@@ -36,7 +36,7 @@ std::string num(double v)
 } // namespace
 
 std::vector<SweepRun> runSweep(const CaseSource& src, const Overrides& set, const std::vector<SweepDim>& dims, const std::string& dir,
-                               bool plots, bool quiet)
+                               bool plots, bool quiet, const std::string& solver)
 {
     std::vector<Overrides> combos = {{}};
     for (const auto& d : dims)
@@ -59,7 +59,9 @@ std::vector<SweepRun> runSweep(const CaseSource& src, const Overrides& set, cons
         for (const auto& [k, v] : o) run.label += (run.label.empty() ? "" : "_") + shortKey(k) + "=" + num(v);
         Overrides all = set;
         all.insert(all.end(), o.begin(), o.end());
-        run.results = runCase(src.build(all));
+        Case c = src.build(all);
+        if (!solver.empty()) c.solver.method = solver;
+        run.results = runCase(c);
         run.eff = efficiency(run.results);
         writeRun(run.results, run.eff, dir + "/" + run.label, false);
         if (!quiet) std::cout << "--- " << run.label << '\n' << summaryText(run.results, run.eff);

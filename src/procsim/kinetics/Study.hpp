@@ -20,7 +20,7 @@ struct SweepRun
 
 // one or two swept keys (cartesian product); writes <dir>/<label>/..., sweep_summary.csv, family plots
 std::vector<SweepRun> runSweep(const CaseSource& src, const Overrides& set, const std::vector<SweepDim>& dims, const std::string& dir,
-                               bool plots, bool quiet);
+                               bool plots, bool quiet, const std::string& solver);
 
 struct SensitivityRow
 {
