@@ -68,14 +68,14 @@ def read_vtp_array(path, name):
     return [float(x) for x in m.group(1).split()]
 
 
-def plot(png, script):
+def plot(png, script, size=(900, 600)):
     """Run a gnuplot script that draws into png (pngcairo, or png if absent)."""
-    terminal = 'set terminal pngcairo size 900,600 font "Sans,11"\n'
+    terminal = 'set terminal pngcairo size %d,%d font "Sans,11"\n' % size
     full = terminal + 'set output "%s"\n' % png + script
     result = subprocess.run(['gnuplot'], input=full, text=True,
                             capture_output=True)
     if result.returncode != 0 or not os.path.isfile(png):
-        full = 'set terminal png size 900,600\nset output "%s"\n' % png + script
+        full = 'set terminal png size %d,%d\nset output "%s"\n' % (size + (png,)) + script
         subprocess.run(['gnuplot'], input=full, text=True, check=True)
 
 
@@ -121,3 +121,50 @@ class Checks:
 def solve_quadratic_positive(a, b, c):
     """Positive root of a x^2 + b x + c = 0 (a > 0, c < 0)."""
     return (-b + math.sqrt(b * b - 4 * a * c)) / (2 * a)
+
+
+def read_field(path):
+    """internalField of an ASCII OpenFOAM volume field: a list of floats or
+    of (x, y, z) tuples ('uniform' values are returned as one-element lists)."""
+    text = open(path).read()
+    m = re.search(r'internalField\s+uniform\s+([^;]+);', text)
+    if m:
+        value = m.group(1).strip()
+        if value.startswith('('):
+            return [tuple(float(v) for v in value.strip('()').split())]
+        return [float(value)]
+    m = re.search(r'internalField\s+nonuniform\s+List<(\w+)>\s*(\d+)\s*\((.*?)\)\s*;',
+                  text, re.S)
+    kind, n, body = m.group(1), int(m.group(2)), m.group(3)
+    if kind == 'scalar':
+        values = [float(v) for v in body.split()]
+    else:
+        numbers = [float(v) for v in body.replace('(', ' ').replace(')', ' ').split()]
+        values = [tuple(numbers[i:i + 3]) for i in range(0, len(numbers), 3)]
+    if len(values) != n:
+        raise ValueError('%s: expected %d values, read %d' % (path, n, len(values)))
+    return values
+
+
+def latest_time(case='.'):
+    """The newest time directory of a case (as its name)."""
+    times = []
+    for name in os.listdir(case):
+        try:
+            if name != '0.orig' and os.path.isdir(os.path.join(case, name)):
+                times.append((float(name), name))
+        except ValueError:
+            pass
+    return max(times)[1]
+
+
+def moving_average(times, values, window):
+    """Trailing average over `window` seconds at each sample."""
+    out, start, total = [], 0, 0.0
+    for i, (t, v) in enumerate(zip(times, values)):
+        total += v
+        while times[start] < t - window + 1e-12:
+            total -= values[start]
+            start += 1
+        out.append(total / (i - start + 1))
+    return out

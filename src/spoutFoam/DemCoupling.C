@@ -147,6 +147,26 @@ DemCoupling::DemCoupling
         ),
         mesh,
         Foam::dimensionedVector(Foam::dimVelocity, Foam::Zero)
+    ),
+    solidFraction_
+    (
+        Foam::IOobject
+        (
+            "solidFraction", mesh.time().timeName(), mesh,
+            Foam::IOobject::NO_READ, Foam::IOobject::AUTO_WRITE
+        ),
+        mesh,
+        Foam::dimensionedScalar(Foam::dimless, Foam::Zero)
+    ),
+    solidFlux_
+    (
+        Foam::IOobject
+        (
+            "solidFlux", mesh.time().timeName(), mesh,
+            Foam::IOobject::NO_READ, Foam::IOobject::AUTO_WRITE
+        ),
+        mesh,
+        Foam::dimensionedVector(Foam::dimVelocity, Foam::Zero)
     )
 {
     if (couplingInterval_ < 1)
@@ -381,9 +401,13 @@ void DemCoupling::exchange(const VoidFractionResult& vf)
         Ksl_[celli] = ex.beta[celli];
         const Vec3& us = ex.Us[celli];
         Us_[celli] = Foam::vector(us.x, us.y, us.z);
+        solidFraction_[celli] = ex.solidFraction[celli];
+        solidFlux_[celli] = ex.solidFraction[celli]*Us_[celli];
     }
     Ksl_.correctBoundaryConditions();
     Us_.correctBoundaryConditions();
+    solidFraction_.correctBoundaryConditions();
+    solidFlux_.correctBoundaryConditions();
 
     fluidForce_ = ex.totalForce;
     dem_->setFluidForces(fluidForce_);

@@ -1,0 +1,140 @@
+"""The two-dimensional slanted-base spouted bed: its geometry read from a
+case's system/spoutedBedDict, shared by the case's generate script and its
+post-processing (snapshots, profiles)."""
+import math
+import os
+import re
+import sys
+
+
+def read_dict(path, overrides):
+    values = {}
+    text = re.sub(r'/\*.*?\*/', '', open(path).read(), flags=re.S)
+    for line in text.splitlines():
+        line = line.split('//')[0].strip()
+        m = re.match(r'^(\w+)\s+([^;{}]+);$', line)
+        if m and m.group(1) != 'FoamFile':
+            values[m.group(1)] = m.group(2).strip()
+    for item in overrides:
+        key, _, value = item.partition('=')
+        if key not in values:
+            sys.exit('generate: %s: unknown key %r (expected one of: %s)'
+                     % (path, key, ', '.join(sorted(values))))
+        values[key] = value
+    return values
+
+
+class Geometry:
+    """The vessel in mm, from the dictionary."""
+
+    def __init__(self, d, path):
+        def number(key, positive=True):
+            try:
+                v = float(d[key])
+            except (KeyError, ValueError):
+                sys.exit('generate: %s: key %r expected a number, got %r'
+                         % (path, key, d.get(key)))
+            if positive and not v > 0:
+                sys.exit('generate: %s: key %r expected a positive number, got %r'
+                         % (path, key, d[key]))
+            return v
+
+        self.W, self.Lb, self.Wi = number('W'), number('Lb'), number('Wi')
+        self.theta = number('theta')
+        self.plates = d.get('plates', 'yes') in ('yes', 'on', 'true')
+        self.Wd, self.He, self.Hd = number('Wd'), number('He'), number('Hd')
+        self.t = number('plateThickness')
+        self.H = number('H')
+        self.refine = int(number('refine'))
+        self.dx = number('cellWidth') / self.refine
+        self.dz = number('cellHeight') / self.refine
+        self.particles = {k: number(k) for k in
+                          ('nParticles', 'dp', 'rhop', 'kn', 'e', 'mu', 'nu', 'dtDem')}
+        self.tan = math.tan(math.radians(self.theta))
+        self.nx = round(self.W / self.dx)
+        self.nz = round(self.H / self.dz)
+        self.nInlet = round(self.Wi / self.dx)
+        if abs(self.nx * self.dx - self.W) > 1e-9 or abs(self.nz * self.dz - self.H) > 1e-9:
+            sys.exit('generate: %s: W and H must be whole numbers of cells '
+                     '(W/cellWidth = %g, H/cellHeight = %g)'
+                     % (path, self.W / self.dx, self.H / self.dz))
+        if abs(self.nInlet * self.dx - self.Wi) > 1e-9 or (self.nx - self.nInlet) % 2:
+            sys.exit('generate: %s: the inlet slot Wi must span a whole, centred '
+                     'number of cells' % path)
+        if self.plates and self.Wd / 2 + self.t >= self.W / 2:
+            sys.exit('generate: %s: the draft plates do not fit in the vessel' % path)
+        self.baseTop = (self.W - self.Wi) / 2 * self.tan   # base meets the walls
+
+    def base_height(self, x):
+        """z of the slanted base at |x| (0 over the inlet slot)."""
+        return max(0.0, (abs(x) - self.Wi / 2) * self.tan)
+
+    def removed_boxes(self):
+        """Boxes (x0, x1, z0, z1) of gas cells removed from the full box:
+        per column, the cells wholly below the base line at the column's inner
+        edge; and the cells inside the draft plates."""
+        boxes = []
+        half = self.W / 2
+        for i in range(self.nx):
+            x0, x1 = -half + i * self.dx, -half + (i + 1) * self.dx
+            inner = min(abs(x0), abs(x1)) if x0 * x1 > 0 else 0.0
+            line = self.base_height(inner)
+            k = int(math.floor(line / self.dz + 1e-9))   # cells wholly below
+            if k > 0:
+                boxes.append((x0, x1, 0.0, k * self.dz))
+        if self.plates:
+            for side in (-1, 1):
+                xa = side * self.Wd / 2
+                xb = side * (self.Wd / 2 + self.t)
+                boxes.append((min(xa, xb), max(xa, xb), self.He, self.Hd))
+        return boxes
+
+
+def load(case='.', overrides=()):
+    path = os.path.join(case, 'system', 'spoutedBedDict')
+    return Geometry(read_dict(path, overrides), path)
+
+
+def outline(g):
+    """Line segments (x0, z0, x1, z1) in m of the vessel, base and plates."""
+    half, mm = g.W / 2, 1e-3
+    segs = [(-half, g.baseTop, -half, g.H), (half, g.baseTop, half, g.H),
+            (-g.Wi / 2, 0, -half, g.baseTop), (g.Wi / 2, 0, half, g.baseTop),
+            (-g.Wi / 2, 0, g.Wi / 2, 0)]
+    if g.plates:
+        for s in (-1, 1):
+            xa, xb = s * g.Wd / 2, s * (g.Wd / 2 + g.t)
+            segs += [(xa, g.He, xa, g.Hd), (xb, g.He, xb, g.Hd),
+                     (xa, g.He, xb, g.He), (xa, g.Hd, xb, g.Hd)]
+    return [tuple(v * mm for v in s) for s in segs]
+
+
+def snapshot(g, vtp, png, title, vmax=1.0):
+    """Particles of one .vtp as discs in the x-z plane, coloured by their
+    vertical velocity (like the papers' flow-pattern snapshots)."""
+    import spoutlab_case as sc
+    points = sc.read_vtp_points(vtp)
+    radii = sc.read_vtp_array(vtp, 'radius')
+    vel = sc.read_vtp_array(vtp, 'velocity')
+    data = png[:-4] + '.dat'
+    with open(data, 'w') as f:
+        for (x, y, z), r, vz in zip(points, radii, vel[2::3]):
+            f.write('%.6g %.6g %.6g %.5g\n' % (x, z, r, vz))
+    arrows = '\n'.join('set arrow from %g,%g to %g,%g nohead lw 2 lc rgb "black" front'
+                       % s for s in outline(g))
+    height = 0.8 * g.H / g.W * 600 + 120
+    sc.plot(png, '''
+set title "%s"
+set size ratio -1
+set xrange [%g:%g]
+set yrange [0:%g]
+set xlabel "x [m]"
+set ylabel "z [m]"
+set cblabel "vertical particle velocity [m/s]"
+set cbrange [%g:%g]
+set palette defined (0 "#3b4cc0", 0.5 "#dddddd", 1 "#b40426")
+%s
+plot "%s" using 1:2:3:4 with circles lc palette fs solid noborder notitle
+''' % (title, -g.W / 2000, g.W / 2000, g.H / 1000, -vmax, vmax, arrows, data),
+            size=(600, int(height)))
+    os.remove(data)
