@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <iomanip>
 #include <sstream>
+#include <stdexcept>
 
 #include "common/Csv.hpp"
 #include "common/Plot.hpp"
@@ -70,6 +71,11 @@ Results analyse(const Model& model, const Trajectory& tr)
     for (std::size_t s = 0; s < sp.size(); ++s) feedCarbon += feed[s] * sp[s].carbon * r.cas.volume;
     for (std::size_t i = 0; i < tr.t.size(); ++i)
     {
+        if (!tr.y[i].allFinite())
+        {
+            throw std::runtime_error("the solution is not finite at t = " + std::to_string(tr.t[i] / 3600.0)
+                                     + " h (rk4 step too large for a stiff mechanism? use solver cvode)");
+        }
         const Eigen::VectorXd c = model.allSpecies(tr.y[i]);
         double organic = 0, inorganic = 0;
         for (std::size_t s = 0; s < sp.size(); ++s)
