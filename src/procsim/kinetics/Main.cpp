@@ -1,6 +1,7 @@
 #include "kinetics/Main.hpp"
 
 #include <filesystem>
+#include <iomanip>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -263,6 +264,24 @@ int cmdRun(int argc, char** argv)
     }
     if (sweeps.size() > 2) throw InputError("kinetics run: at most two --sweep keys");
     const auto runs = runSweep(src, a.set, sweeps, dir, !a.noPlots, a.quiet, a.solver);
+    // one-screen table: swept values, then every plotted quantity at the last report time
+    const Results& r0 = runs.front().results;
+    const double tEnd = r0.cas.reportTimes.empty() ? r0.t.back() : r0.cas.reportTimes.back();
+    auto names = plotSpecies(r0);
+    names.push_back("TOC");
+    std::cout << "sweep of " << r0.cas.title << ": values at " << tEnd / 3600.0 << " h (mg/L; TOC mg C/L)\n ";
+    for (const auto& d : sweeps) std::cout << std::setw(16) << shortKey(d.key);
+    for (const auto& n : names) std::cout << std::setw(10) << n;
+    std::cout << std::setw(10) << "t_1/2 h" << '\n';
+    for (const auto& run : runs)
+    {
+        std::cout << ' ';
+        for (const auto& kv : run.values) std::cout << std::setw(16) << kv.second;
+        for (const auto& n : names) std::cout << std::setw(10) << std::setprecision(4) << run.results.value(n, tEnd);
+        if (run.eff.halfReached) std::cout << std::setw(10) << std::setprecision(4) << run.eff.tHalf / 3600.0;
+        else std::cout << std::setw(10) << "-";
+        std::cout << std::setprecision(6) << '\n';
+    }
     std::cout << runs.size() << " runs; table: " << dir << "/sweep_summary.csv";
     if (!a.noPlots) std::cout << ", plots: " << dir << "/family_*.png, " << dir << "/sweep_*.png";
     std::cout << '\n';

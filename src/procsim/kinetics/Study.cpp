@@ -16,15 +16,6 @@ namespace procsim::kinetics
 namespace
 {
 
-std::string shortKey(const std::string& key)
-{
-    const auto p = key.rfind('.');
-    const std::string last = p == std::string::npos ? key : key.substr(p + 1);
-    // initial_mg_per_L.PH -> PH_mg_per_L reads better than PH
-    if (key.rfind("initial_mg_per_L.", 0) == 0) return last + "0_mg_per_L";
-    if (key.rfind("gas.inlet_ppm.", 0) == 0) return last + "_in_ppm";
-    return last;
-}
 
 std::string num(double v)
 {
@@ -34,6 +25,16 @@ std::string num(double v)
 }
 
 } // namespace
+
+std::string shortKey(const std::string& key)
+{
+    const auto p = key.rfind('.');
+    const std::string last = p == std::string::npos ? key : key.substr(p + 1);
+    // initial_mg_per_L.PH -> PH_mg_per_L reads better than PH
+    if (key.rfind("initial_mg_per_L.", 0) == 0) return last + "0_mg_per_L";
+    if (key.rfind("gas.inlet_ppm.", 0) == 0) return last + "_in_ppm";
+    return last;
+}
 
 std::vector<SweepRun> runSweep(const CaseSource& src, const Overrides& set, const std::vector<SweepDim>& dims, const std::string& dir,
                                bool plots, bool quiet, const std::string& solver)

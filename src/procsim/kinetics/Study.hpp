@@ -10,6 +10,9 @@
 namespace procsim::kinetics
 {
 
+// short column name of a swept key: "initial_mg_per_L.PH" -> "PH0_mg_per_L"
+std::string shortKey(const std::string& key);
+
 struct SweepRun
 {
     Overrides values;     // the swept keys and their values for this run
