@@ -1,0 +1,174 @@
+// ISCST3-style Gaussian plume: values computed by hand (formulas written out
+// in the comments, evaluated on a calculator/spreadsheet), the stability
+// table, reflections, virtual sources and source depletion.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "plume/Gaussian.hpp"
+
+using namespace procsim::plume;
+
+namespace
+{
+
+Source point(double x, double y, double h, double gPerS)
+{
+    Source s;
+    s.name = "S";
+    s.type = Source::Type::Point;
+    s.x = x;
+    s.y = y;
+    s.height = h;
+    s.rate = gPerS * 1e-3;
+    return s;
+}
+
+Receptor receptor(double x, double y, double z)
+{
+    Receptor r;
+    r.name = "R";
+    r.x = x;
+    r.y = y;
+    r.height = z;
+    return r;
+}
+
+PlumeHour westWind(double u10, int cls, double zi)
+{
+    PlumeHour h;
+    h.u10 = u10;
+    h.directionFrom = 270;   // blows towards +x
+    h.cls = cls;
+    h.mixingHeight = zi;
+    return h;
+}
+
+} // namespace
+
+// Q = 10 g/s at h = 20 m; receptor 500 m downwind, 50 m crosswind, 1.5 m up;
+// u10 = 3 m/s raised to 20 m with the ISC rural exponent p of the class,
+// u = 3 (20/10)^p; Briggs rural sigmas at x = 500 m:
+//   A: sy = 0.22x/sqrt(1.05) = 107.349, sz = 0.20x = 100
+//   B: sy = 78.072, sz = 60;  C: sy = 53.6745, sz = 0.08x/sqrt(1.1) = 38.1385
+//   D: sy = 39.036, sz = 0.06x/sqrt(1.75) = 22.6779
+//   E: sy = 29.277, sz = 0.03x/1.15 = 13.0435;  F: sy = 19.518, sz = 6.95652
+// C = Q/(2 pi u sy sz) exp(-y^2/2sy^2) [exp(-(z-h)^2/2sz^2) + exp(-(z+h)^2/2sz^2)]
+// (mixing height 5000 m: its images are negligible here)
+TEST(GaussianHandComputed, EachStabilityClass)
+{
+    const double expectedUg[7] = {0, 82.797563, 166.225550, 272.961630, 322.215016, 157.910250, 3.766592};
+    GaussianModel m({point(0, 0, 20, 10)}, GaussianOptions{});
+    for (int cls = 1; cls <= 6; ++cls)
+    {
+        const double c = m.concentration(westWind(3.0, cls, 5000), receptor(500, 50, 1.5)) * 1e9;
+        EXPECT_NEAR(c, expectedUg[cls], 1e-5 * expectedUg[cls]) << "class " << className(cls);
+    }
+}
+
+// Class C at x = 3000 m: sz = 0.08*3000/sqrt(1.6) = 189.737 m; u = 3 * 2^0.10.
+//  zi = 200 m (sz < 1.6 zi): images at 2 i zi +- h, V = 2.43126677 at z = 1.5,
+//    y = 0, so C = Q V / (2 pi u sy sz) = 2.191467e-8 kg/m3;
+//  zi = 100 m (sz > 1.6 zi): uniform mixing C = Q / (sqrt(2 pi) u sy zi) = 4.286902e-8.
+TEST(GaussianHandComputed, MixingHeightReflectionAndUniformMixing)
+{
+    GaussianModel m({point(0, 0, 20, 10)}, GaussianOptions{});
+    EXPECT_NEAR(m.concentration(westWind(3.0, 3, 200), receptor(3000, 0, 1.5)), 2.191467e-8, 1e-5 * 2.191467e-8);
+    EXPECT_NEAR(m.concentration(westWind(3.0, 3, 100), receptor(3000, 0, 1.5)), 4.286902e-8, 1e-5 * 4.286902e-8);
+    // release above the mixing layer (unstable/neutral): nothing at the ground
+    EXPECT_EQ(m.concentration(westWind(3.0, 3, 15), receptor(3000, 0, 1.5)), 0.0);
+    // upwind receptor: nothing
+    EXPECT_EQ(m.concentration(westWind(3.0, 3, 1000), receptor(-300, 0, 1.5)), 0.0);
+}
+
+// Volume source, class D: side 43 m -> sy0 = 10 m, ground-based height
+// 21.5 m -> sz0 = 10 m; virtual distances from 0.08 xy/sqrt(1+1e-4 xy) = 10
+// (xy = 125.7837 m) and 0.06 xz/sqrt(1+1.5e-3 xz) = 10 (xz = 188.7970 m);
+// centre height 10.75 m, u = 2 (10.75/10)^0.15 = 2.021814 m/s; receptor at
+// the ground 400 m downwind on the axis: C = Q 2 exp(-h^2/2sz^2)/(2 pi u sy sz)
+// with sy = sy(525.7837), sz = sz(588.7970): 6.835578e-7 kg/m3 for Q = 5 g/s.
+TEST(GaussianHandComputed, VolumeSourceAsVirtualPointSource)
+{
+    Source v;
+    v.name = "V";
+    v.type = Source::Type::Volume;
+    v.x = 0;
+    v.y = 0;
+    v.lx = v.ly = 43;
+    v.bottom = 0;
+    v.top = 21.5;
+    v.height = 10.75;
+    v.rate = 5e-3;
+    GaussianModel m({v}, GaussianOptions{});
+    EXPECT_NEAR(m.concentration(westWind(2.0, 4, 5000), receptor(400, 0, 0)), 6.835578e-7, 1e-5 * 6.835578e-7);
+}
+
+TEST(GaussianHandComputed, SmallAreaSourceActsAsPointSourceFarAway)
+{
+    Source a;
+    a.name = "A";
+    a.type = Source::Type::Area;
+    a.x = 0;
+    a.y = 0;
+    a.lx = a.ly = 20;
+    a.height = 2;
+    a.rate = 4e-3;
+    GaussianModel area({a}, GaussianOptions{});
+    GaussianModel pt({point(0, 0, 2, 4)}, GaussianOptions{});
+    for (int cls = 1; cls <= 6; ++cls)
+    {
+        const double ca = area.concentration(westWind(2.5, cls, 5000), receptor(2000, 30, 1.5));
+        const double cp = pt.concentration(westWind(2.5, cls, 5000), receptor(2000, 30, 1.5));
+        EXPECT_NEAR(ca, cp, 0.01 * cp) << className(cls);
+    }
+}
+
+// Source depletion, Q(x)/Q0 = exp(-(vd/u) sqrt(2/pi) int_1^x dxi / (sz e^{h^2/2sz^2})).
+// Class A ground source: sz = 0.2 xi, integral = 5 ln x; vd = 0.01 m/s,
+// u = 2 m/s, x = 800 m: exp(-0.005 sqrt(2/pi) 5 ln 800) = 0.875168612.
+TEST(GaussianDeposition, SourceDepletionClassAGroundRelease)
+{
+    GaussianOptions with;
+    with.depositionVelocity = 0.01;
+    GaussianModel dep({point(0, 0, 0, 1)}, with);
+    GaussianModel none({point(0, 0, 0, 1)}, GaussianOptions{});
+    const auto h = westWind(2.0, 1, 5000);   // ground source: u = u10
+    const double ratio = dep.concentration(h, receptor(800, 0, 0)) / none.concentration(h, receptor(800, 0, 0));
+    EXPECT_NEAR(ratio, 0.875168612, 2e-4);   // tabulated integral, interpolated in ln x
+    EXPECT_NEAR(dep.depletion(1, 2.0, 0.0, 800), 0.875168612, 1e-6);
+}
+
+// Constant K: sz = sqrt(2 K x / u); for h = 0 the integral is
+// sqrt(u/2K) 2 (sqrt(x) - 1); K_V = 2, u = 3, vd = 0.004, x = 1500.
+TEST(GaussianDeposition, SourceDepletionConstantK)
+{
+    GaussianOptions o;
+    o.constantK = true;
+    o.kH = 20;
+    o.kV = 2;
+    o.depositionVelocity = 0.004;
+    GaussianModel m({point(0, 0, 0, 1)}, o);
+    const double j = std::sqrt(2 / M_PI) * std::sqrt(3.0 / 4.0) * 2 * (std::sqrt(1500.0) - 1);
+    EXPECT_NEAR(m.depletion(4, 3.0, 0.0, 1500), std::exp(-0.004 / 3.0 * j), 1e-6);
+}
+
+TEST(GaussianStability, PasquillTableAndSunElevation)
+{
+    // 21 June at 14.5 N, solar noon: declination 23.45 deg, elevation 90 - 8.95
+    EXPECT_NEAR(solarElevationDeg(14.5, 172, 12.0), 81.05, 0.02);
+    // 21 March (day 80), 6 h: the sun on the horizon
+    EXPECT_NEAR(solarElevationDeg(0.0, 80, 6.0), 0.0, 0.5);
+    EXPECT_EQ(stabilityClass(1.5, 1, 70), 1);   // strong sun, light wind: A
+    EXPECT_EQ(stabilityClass(2.5, 1, 70), 2);   // A-B -> B
+    EXPECT_EQ(stabilityClass(4.0, 1, 45), 3);   // moderate, 3-5 m/s: B-C -> C
+    EXPECT_EQ(stabilityClass(4.0, 6, 70), 3);   // > 4 oktas: strong -> moderate: C
+    EXPECT_EQ(stabilityClass(1.5, 2, 20), 2);   // slight, < 2 m/s: B
+    EXPECT_EQ(stabilityClass(7.0, 2, 70), 3);   // strong, > 6 m/s: C
+    EXPECT_EQ(stabilityClass(5.5, 2, 45), 4);   // C-D -> D
+    EXPECT_EQ(stabilityClass(3.0, 8, 70), 4);   // overcast: D
+    EXPECT_EQ(stabilityClass(2.5, 5, -10), 5);  // cloudy night, 2-3 m/s: E
+    EXPECT_EQ(stabilityClass(2.5, 1, -10), 6);  // clear night: F
+    EXPECT_EQ(stabilityClass(4.0, 1, -10), 5);  // clear night, 3-5 m/s: E
+    EXPECT_EQ(stabilityClass(4.0, 5, -10), 4);  // cloudy night, 3-5 m/s: D
+    EXPECT_EQ(stabilityClass(6.5, 0, -10), 4);
+}
