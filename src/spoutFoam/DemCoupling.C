@@ -88,6 +88,13 @@ void requireKnown
 }
 
 
+void sumOverRanks(std::vector<Vec3>& v)
+{
+    static_assert(sizeof(Vec3) == 3*sizeof(double), "Vec3 is three doubles");
+    sumOverRanks(reinterpret_cast<double*>(v.data()), 3*v.size());
+}
+
+
 std::vector<Vec3> toVec3(const Foam::vectorField& field)
 {
     std::vector<Vec3> out(field.size());
@@ -238,13 +245,7 @@ DemCoupling::DemCoupling
     const VoidFractionResult vf = mapParticles();
     exchange(vf);
     voidfraction_.oldTime() = voidfraction_;
-    if (Foam::Pstream::master())
-    {
-        vtk_.write
-        (
-            mesh.time().value(), mesh.time().timeName(), particles_, fluidForce_
-        );
-    }
+    writeParticles();
 }
 
 
@@ -409,24 +410,10 @@ void DemCoupling::exchange(const VoidFractionResult& vf)
     solidFraction_.correctBoundaryConditions();
     solidFlux_.correctBoundaryConditions();
 
+    // this rank's share; summed over ranks only when written
     fluidForce_ = ex.totalForce;
+    dragForce_ = ex.dragForce;
     dem_->setFluidForces(fluidForce_);
-    if (Foam::Pstream::parRun())
-    {
-        // every rank now holds the summed force of every particle
-        std::vector<double> f(3*fluidForce_.size());
-        for (std::size_t i = 0; i < fluidForce_.size(); ++i)
-        {
-            f[3*i] = fluidForce_[i].x;
-            f[3*i + 1] = fluidForce_[i].y;
-            f[3*i + 2] = fluidForce_[i].z;
-        }
-        sumOverRanks(f.data(), f.size());
-        for (std::size_t i = 0; i < fluidForce_.size(); ++i)
-        {
-            fluidForce_[i] = Vec3{f[3*i], f[3*i + 1], f[3*i + 2]};
-        }
-    }
     logStep(vf, ex);
 }
 
@@ -497,13 +484,31 @@ void DemCoupling::write()
     const Foam::Time& runTime = mesh_.time();
     if (!runTime.writeTime()) return;
 
-    if (Foam::Pstream::master())
-    {
-        vtk_.write(runTime.value(), runTime.timeName(), particles_, fluidForce_);
-    }
+    writeParticles();
     const Foam::fileName restart =
         runTime.globalPath()/"DEM"/("restart_" + runTime.timeName() + ".liggghts");
     dem_->command("write_restart " + restart);
+}
+
+
+void DemCoupling::writeParticles()
+{
+    // forces are held per rank (each rank's share); the file gets the sums
+    std::vector<Vec3> fluid = fluidForce_, drag = dragForce_;
+    if (Foam::Pstream::parRun())
+    {
+        sumOverRanks(fluid);
+        sumOverRanks(drag);
+    }
+    if (Foam::Pstream::master())
+    {
+        const Foam::Time& runTime = mesh_.time();
+        vtk_.write
+        (
+            runTime.value(), runTime.timeName(), particles_,
+            {{"fluidForce", fluid}, {"dragForce", drag}}
+        );
+    }
 }
 
 

@@ -50,7 +50,7 @@ void ParticleVtkSeries::write
     double time,
     const std::string& timeName,
     const std::vector<Particle>& particles,
-    const std::vector<Vec3>& fluidForce
+    const std::vector<std::pair<std::string, std::vector<Vec3>>>& vectors
 ) const
 {
     std::filesystem::create_directories(directory_);
@@ -82,11 +82,15 @@ void ParticleVtkSeries::write
         for (const auto& p : particles) os << ' ' << p.radius << '\n';
         os << "        </DataArray>\n";
         writeVectorArray(os, "velocity", n, [&](std::size_t i) { return particles[i].v; });
-        writeVectorArray
-        (
-            os, "fluidForce", n,
-            [&](std::size_t i) { return i < fluidForce.size() ? fluidForce[i] : Vec3{}; }
-        );
+        for (const auto& named : vectors)
+        {
+            const std::vector<Vec3>& v = named.second;
+            writeVectorArray
+            (
+                os, named.first.c_str(), n,
+                [&](std::size_t i) { return i < v.size() ? v[i] : Vec3{}; }
+            );
+        }
         os << "      </PointData>\n"
            << "      <Verts>\n"
            << "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
