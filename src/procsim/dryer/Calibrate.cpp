@@ -12,31 +12,31 @@ namespace procsim::dryer
 namespace
 {
 
+// One residual block per batch, so Ceres can evaluate batches in parallel.
 struct BatchCost
 {
-    Plant* plant;
-    std::vector<std::string> batches;
+    const Plant* plant;
+    std::string batch;
 
     bool operator()(double const* const* params, double* residuals) const
     {
         Plant p = *plant;
         for (std::size_t i = 0; i < p.fit.size(); ++i) p.set(p.fit[i].name, params[i][0]);
-        std::size_t k = 0;
-        for (const auto& id : batches)
+        const BatchSpec& b = p.batch(batch);
+        BatchResult r;
+        try
         {
-            const BatchSpec& b = p.batch(id);
-            BatchResult r;
-            try
-            {
-                r = simulate(p.caseFor(b));
-            }
-            catch (const std::exception&)
-            {
-                return false;   // Ceres shortens the step
-            }
-            residuals[k++] = r.dryingTime / *b.measuredTime - 1.0;
-            residuals[k++] = r.electricityJ / *b.measuredElectricity - 1.0;
+            DryerCase c = p.caseFor(b);
+            c.relTol = 1e-6;
+            c.outputInterval = 3600;
+            r = simulate(c);
         }
+        catch (const std::exception&)
+        {
+            return false;   // Ceres shortens the step
+        }
+        residuals[0] = r.dryingTime / *b.measuredTime - 1.0;
+        residuals[1] = r.electricityJ / *b.measuredElectricity - 1.0;
         return true;
     }
 };
@@ -67,15 +67,18 @@ CalibrationResult calibrate(Plant& plant)
 
     ceres::NumericDiffOptions nd;
     nd.relative_step_size = 1e-3;   // well above the ODE tolerance noise
-    auto* cost = new ceres::DynamicNumericDiffCostFunction<BatchCost, ceres::CENTRAL>(
-        new BatchCost{&plant, plant.calibrateOn}, ceres::TAKE_OWNERSHIP, nd);
-    for (std::size_t i = 0; i < x.size(); ++i) cost->AddParameterBlock(1);
-    cost->SetNumResiduals(static_cast<int>(2 * plant.calibrateOn.size()));
-
     ceres::Problem problem;
     std::vector<double*> blocks;
     for (double& v : x) blocks.push_back(&v);
-    problem.AddResidualBlock(cost, nullptr, blocks);
+    const Plant frozen = plant;
+    for (const auto& id : plant.calibrateOn)
+    {
+        auto* cost = new ceres::DynamicNumericDiffCostFunction<BatchCost, ceres::FORWARD>(
+            new BatchCost{&frozen, id}, ceres::TAKE_OWNERSHIP, nd);
+        for (std::size_t i = 0; i < x.size(); ++i) cost->AddParameterBlock(1);
+        cost->SetNumResiduals(2);
+        problem.AddResidualBlock(cost, nullptr, blocks);
+    }
     for (std::size_t i = 0; i < x.size(); ++i)
     {
         problem.SetParameterLowerBound(&x[i], 0, plant.fit[i].lower);
@@ -87,6 +90,7 @@ CalibrationResult calibrate(Plant& plant)
     opt.function_tolerance = 1e-10;
     opt.parameter_tolerance = 1e-8;
     opt.logging_type = ceres::SILENT;
+    opt.num_threads = 2;
     ceres::Solver::Summary summary;
     ceres::Solve(opt, &problem, &summary);
     out.fitted = x;

@@ -115,15 +115,16 @@ const char* kPlantHelp =
     "    scorch_temperature_C           product temperature that scorches\n"
     "  kinetics:   characteristic drying curve\n"
     "    critical_moisture_percent_db   X_cr: constant rate above, falling rate below\n"
-    "    equilibrium_moisture_percent_db  X_eq: rate zero at and below\n"
+    "    oswin_A_percent_db, oswin_B    equilibrium moisture X_eq = A (a/(1-a))^B at the\n"
+    "                                   air's relative humidity a: rate zero at and below\n"
     "    falling_rate_exponent          n in f = ((X - X_eq)/(X_cr - X_eq))^n\n"
     "  operation:\n"
     "    ambient_temperature_C, ambient_relative_humidity_percent, pressure_kPa\n"
     "  run: (optional) max_time_h (30), output_interval_min (10)\n"
     "  venting: named arrangements, each\n"
     "    vented_fraction                vented air G_v / G, replaced by ambient air\n"
-    "    vent_short_circuit_fraction    share of G_v drawn from the freshly heated\n"
-    "                                   supply instead of the humid return air\n"
+    "    vent_short_circuit_fraction    share of the make-up air that is heated and\n"
+    "                                   vented without reaching the trays\n"
     "  batches: list of\n"
     "    id, venting (a name above), hot_air_temperature_C (set-point at the louvres)\n"
     "    dry_mass_kg, initial_moisture_percent_db, target_moisture_percent_db\n"
@@ -133,7 +134,7 @@ const char* kPlantHelp =
     "  calibration: (optional)\n"
     "    fit: list of {parameter, lower, upper}; parameter one of\n"
     "         heat_transfer_coefficient_W_per_m2K, falling_rate_exponent,\n"
-    "         critical_moisture_percent_db, wall_UA_W_per_K,\n"
+    "         critical_moisture_percent_db, oswin_A_percent_db, wall_UA_W_per_K,\n"
     "         venting.<name>.vented_fraction, venting.<name>.vent_short_circuit_fraction\n"
     "    calibrate_on: batch ids; predict: batch ids; predict_venting: a venting name\n"
     "  whatif: (optional)\n"
@@ -236,7 +237,11 @@ std::string outDir(const Args& a)
 {
     const auto it = a.options.find("--out");
     const std::string d = it == a.options.end() ? "." : it->second;
-    ::mkdir(d.c_str(), 0755);
+    for (std::size_t pos = d.find('/', 1); ; pos = d.find('/', pos + 1))
+    {
+        ::mkdir(d.substr(0, pos).c_str(), 0755);   // parents first; errors show below
+        if (pos == std::string::npos) break;
+    }
     struct stat st;
     if (::stat(d.c_str(), &st) != 0 || !S_ISDIR(st.st_mode))
         throw InputError("dryer: --out '" + d + "' is not a directory and cannot be created");

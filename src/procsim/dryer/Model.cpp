@@ -66,10 +66,15 @@ std::vector<double> DryerCase::initialTrayMoisture() const
     const double sd = std::sqrt(var / n);
     for (std::size_t i = 0; i < n; ++i) x[i] = x0 * (1.0 + x0Spread * z[i] / sd);
     for (double v : x)
-        if (v <= xEquilibrium)
-            throw std::domain_error("initial moisture spread too large: a tray starts at or "
-                                    "below the equilibrium moisture");
+        if (v <= 0.0)
+            throw std::domain_error("initial moisture spread too large: a tray starts dry");
     return x;
+}
+
+double DryerCase::equilibriumMoisture(double rh) const
+{
+    const double a = std::clamp(rh, 0.0, 0.999);
+    return oswinA * std::pow(a / (1.0 - a), oswinB);
 }
 
 void nonUniformity(const std::vector<double>& x, double& f1, double& f2)
@@ -110,7 +115,7 @@ struct Loop
     std::size_t n;
     std::vector<double> hA;        // W/K per tray
     std::vector<double> mDry;      // kg per tray
-    double wAmb, hAmb, gv, gt;
+    double wAmb, hAmb, gv, gt;   // gt: air over the trays
 
     explicit Loop(const DryerCase& cs) : c(cs), n(static_cast<std::size_t>(cs.trays()))
     {
@@ -123,15 +128,16 @@ struct Loop
         hAmb = psy::enthalpy(c.ambientC, wAmb);
         gv = c.ventedFraction * c.circulation;
         gt = c.circulation - c.ventShortCircuit * gv;
+        if (!(gt > 0.0)) throw std::domain_error("vented air exceeds the circulation");
     }
 
     std::size_t size() const { return 2 * n + 2 + kCounters; }
 
-    double relativeRate(double x) const
+    double relativeRate(double x, double xeq) const
     {
         if (x >= c.xCritical) return 1.0;
-        if (x <= c.xEquilibrium) return 0.0;
-        return std::pow((x - c.xEquilibrium) / (c.xCritical - c.xEquilibrium), c.fallingExponent);
+        if (x <= xeq) return 0.0;
+        return std::pow((x - xeq) / (c.xCritical - xeq), c.fallingExponent);
     }
 
     double productT(std::size_t i, const double* y) const
@@ -141,20 +147,31 @@ struct Loop
 
     struct Supply
     {
-        double w, h, t, heater;
+        double w, h, t, rh, xeq;   // air over the trays
+        double hShort;             // short-circuited make-up air leaving the vents
+        double heater;             // total heater power
     };
 
+    // Heaters bring the tray stream (recirculated + (1-s) make-up, plus fan
+    // heat) and the short-circuited make-up stream to the set-point; if the
+    // installed power is short, both get the same fraction of their demand.
     Supply supply(double wr, double hr) const
     {
-        const double G = c.circulation;
-        Supply s;
-        s.w = ((G - gv) * wr + gv * wAmb) / G;
-        const double hMix = ((G - gv) * hr + gv * hAmb + c.fanPower) / G;
-        const double want = G * (psy::enthalpy(c.hotAirC, s.w) - hMix);
-        s.heater = std::clamp(want, 0.0, c.heaterPower);
-        s.h = hMix + s.heater / G;
-        s.t = psy::temperatureFromEnthalpy(s.h, s.w);
-        return s;
+        const double G = c.circulation, s = c.ventShortCircuit;
+        Supply out;
+        out.w = ((G - gv) * wr + (1.0 - s) * gv * wAmb) / gt;
+        const double hMix = ((G - gv) * hr + (1.0 - s) * gv * hAmb + c.fanPower) / gt;
+        const double wantMain = std::max(0.0, gt * (psy::enthalpy(c.hotAirC, out.w) - hMix));
+        const double wantShort = s * gv * std::max(0.0, psy::enthalpy(c.hotAirC, wAmb) - hAmb);
+        const double want = wantMain + wantShort;
+        const double scale = want > c.heaterPower ? c.heaterPower / want : 1.0;
+        out.heater = scale * want;
+        out.h = hMix + scale * wantMain / gt;
+        out.hShort = hAmb + (s * gv > 0.0 ? scale * wantShort / (s * gv) : 0.0);
+        out.t = psy::temperatureFromEnthalpy(out.h, out.w);
+        out.rh = psy::relativeHumidity(std::clamp(out.t, -100.0, 200.0), out.w, c.pressure);
+        out.xeq = c.equilibriumMoisture(out.rh);
+        return out;
     }
 
     // Evaporation [kg/s] and convective heat [W] on tray i.
@@ -166,7 +183,7 @@ struct Loop
         const double cHumid = psy::kCpAir + psy::kCpVapour * s.w;
         const double pw = psy::pwFromHumidityRatio(s.w, c.pressure);
         const double ps = psy::saturationPressure(std::clamp(tp, -100.0, 200.0));
-        mdot = relativeRate(x) * hA[i] / cHumid * psy::kMolarRatio * (ps - pw) / (c.pressure - pw);
+        mdot = relativeRate(x, s.xeq) * hA[i] / cHumid * psy::kMolarRatio * (ps - pw) / (c.pressure - pw);
     }
 
     void rhs(const double* y, double* dy) const
@@ -193,9 +210,9 @@ struct Loop
         k[kHeater] = s.heater;
         k[kFan] = c.fanPower;
         k[kWall] = qWall;
-        k[kVentHOut] = (1.0 - sc) * gv * hr + sc * gv * s.h;
+        k[kVentHOut] = (1.0 - sc) * gv * hr + sc * gv * s.hShort;
         k[kVentHIn] = gv * hAmb;
-        k[kVentWOut] = (1.0 - sc) * gv * wr + sc * gv * s.w;
+        k[kVentWOut] = (1.0 - sc) * gv * wr + sc * gv * wAmb;
         k[kVentWIn] = gv * wAmb;
     }
 
@@ -229,11 +246,6 @@ int cvRhs(sunrealtype, N_Vector y, N_Vector dy, void* data)
     static_cast<const Loop*>(data)->rhs(N_VGetArrayPointer(y), N_VGetArrayPointer(dy));
     return 0;
 }
-
-struct RootData
-{
-    const Loop* loop;
-};
 
 int cvRoot(sunrealtype, N_Vector y, sunrealtype* g, void* data)
 {

@@ -5,14 +5,19 @@
 // Air loop (per unit time, dry-air flows in kg/s):
 //   return chamber (well mixed, holdup M_a) --(G - G_v)--> fans + heaters <-- G_v ambient make-up
 //   heaters: mixed air heated to the hot-air set-point (power capped)
-//   supply G: a share s*G_v leaves straight through the vents (short-circuit);
-//             G - s*G_v passes over the trays into the return chamber
-//   return chamber: (1 - s)*G_v leaves through the vents, G - G_v recirculates
+//   short-circuit: a share s of the make-up air is heated and leaves through
+//             the vents without reaching the trays (old ducts);
+//   supply G - s*G_v (recirculated + the rest of the make-up air) passes over
+//             the trays into the return chamber
+//   return chamber: (1 - s)*G_v humid air leaves through the vents, G - G_v recirculates
 // Trays: cart c, tray k; air share phi_ck (mean 1) from the distribution
 // field, heat-transfer coefficient h*phi_ck^n_u.  Product per tray: water
 // mass and enthalpy.  Drying: characteristic drying curve (constant rate
 // above X_cr, falling rate f = ((X - X_eq)/(X_cr - X_eq))^n below), driving
-// force p_ws(T_product) - p_w(air), Lewis analogy k = h / c_humid.
+// force p_ws(T_product) - p_w(air), Lewis analogy k = h / c_humid.  The
+// equilibrium moisture X_eq follows the air's relative humidity through the
+// Oswin isotherm X_eq = A (a/(1-a))^B, so humid (badly vented) air slows the
+// end of drying.
 #include <string>
 #include <vector>
 
@@ -38,7 +43,8 @@ struct DryerCase
     double scorchC = 75;             // product temperature that scorches
     // kinetics
     double xCritical = 0.6;
-    double xEquilibrium = 0.03;
+    double oswinA = 0.1;             // Oswin isotherm, kg/kg dry basis
+    double oswinB = 0.35;
     double fallingExponent = 1.0;
     double hConv = 15;               // W/(m2 K) at the mean air share
     double velocityExponent = 0.8;   // h ~ u^n_u
@@ -49,7 +55,7 @@ struct DryerCase
     double pressure = 101325;
     double circulation = 10;         // G, kg dry air / s through fans
     double ventedFraction = 0.03;    // G_v / G
-    double ventShortCircuit = 0.0;   // s: share of vented air taken from the supply
+    double ventShortCircuit = 0.0;   // s: share of make-up air vented without reaching the trays
     double heaterPower = 90e3;       // W, maximum
     double fanPower = 5e3;           // W, all fans
     double wallUA = 200;             // W/K, walls + roof + doors
@@ -66,6 +72,7 @@ struct DryerCase
     double areaPerTray() const;      // m2 exposed product surface
     std::vector<double> airShares() const;        // phi_ck, mean 1
     std::vector<double> initialTrayMoisture() const;
+    double equilibriumMoisture(double relativeHumidity) const;
 };
 
 struct TimePoint

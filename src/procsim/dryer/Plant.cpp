@@ -91,13 +91,12 @@ void readProduct(const YamlInput& p, DryerCase& c)
 
 void readKinetics(const YamlInput& k, DryerCase& c)
 {
-    k.rejectUnknown({"critical_moisture_percent_db", "equilibrium_moisture_percent_db",
+    k.rejectUnknown({"critical_moisture_percent_db", "oswin_A_percent_db", "oswin_B",
                      "falling_rate_exponent"});
     c.xCritical = k.positive("critical_moisture_percent_db", "% dry basis") / 100.0;
-    c.xEquilibrium = k.nonNegative("equilibrium_moisture_percent_db", "% dry basis") / 100.0;
-    if (!(c.xEquilibrium < c.xCritical))
-        throw k.error("equilibrium_moisture_percent_db",
-                      "a value below critical_moisture_percent_db");
+    c.oswinA = k.nonNegative("oswin_A_percent_db", "% dry basis") / 100.0;
+    c.oswinB = k.nonNegative("oswin_B");
+    if (!(c.oswinB < 1.0)) throw k.error("oswin_B", "an exponent from 0 to 1");
     c.fallingExponent = k.positive("falling_rate_exponent");
 }
 
@@ -132,7 +131,7 @@ Venting readVenting(const YamlInput& v)
 std::vector<std::string> Plant::parameterNames()
 {
     return {"heat_transfer_coefficient_W_per_m2K", "falling_rate_exponent",
-            "critical_moisture_percent_db", "wall_UA_W_per_K",
+            "critical_moisture_percent_db", "oswin_A_percent_db", "wall_UA_W_per_K",
             "venting.<name>.vented_fraction", "venting.<name>.vent_short_circuit_fraction"};
 }
 
@@ -141,6 +140,7 @@ double Plant::get(const std::string& name) const
     if (name == "heat_transfer_coefficient_W_per_m2K") return base.hConv;
     if (name == "falling_rate_exponent") return base.fallingExponent;
     if (name == "critical_moisture_percent_db") return base.xCritical * 100;
+    if (name == "oswin_A_percent_db") return base.oswinA * 100;
     if (name == "wall_UA_W_per_K") return base.wallUA;
     if (name.rfind("venting.", 0) == 0)
     {
@@ -164,6 +164,8 @@ void Plant::set(const std::string& name, double value)
         base.fallingExponent = value;
     else if (name == "critical_moisture_percent_db")
         base.xCritical = value / 100;
+    else if (name == "oswin_A_percent_db")
+        base.oswinA = value / 100;
     else if (name == "wall_UA_W_per_K")
         base.wallUA = value;
     else
@@ -254,10 +256,6 @@ Plant readPlant(const std::string& path)
         if (!(s.xTarget < s.x0))
             throw b.error("target_moisture_percent_db",
                           "a value below initial_moisture_percent_db (" + fmt(s.x0 * 100) + ")");
-        if (!(s.xTarget > p.base.xEquilibrium))
-            throw b.error("target_moisture_percent_db",
-                          "a value above the equilibrium moisture "
-                              + fmt(p.base.xEquilibrium * 100) + " % (never reached otherwise)");
         s.x0Spread = b.has("initial_moisture_spread_percent")
                          ? b.nonNegative("initial_moisture_spread_percent", "%") / 100
                          : 0.0;
@@ -369,7 +367,7 @@ void writePlant(const Plant& p, const std::string& path, const std::string& comm
       << "\n  specific_heat_dry_J_per_kgK: " << fmt(c.cpDry)
       << "\n  scorch_temperature_C: " << fmt(c.scorchC) << "\n";
     o << "kinetics:\n  critical_moisture_percent_db: " << fmt(c.xCritical * 100)
-      << "\n  equilibrium_moisture_percent_db: " << fmt(c.xEquilibrium * 100)
+      << "\n  oswin_A_percent_db: " << fmt(c.oswinA * 100) << "\n  oswin_B: " << fmt(c.oswinB)
       << "\n  falling_rate_exponent: " << fmt(c.fallingExponent) << "\n";
     o << "operation:\n  ambient_temperature_C: " << fmt(c.ambientC)
       << "\n  ambient_relative_humidity_percent: " << fmt(c.ambientRH * 100)

@@ -158,6 +158,8 @@ double wetBulb(double tC, double W, double p)
         if (pw >= saturationPressure(kTmin)) lo = std::min(saturationTemperature(pw), hi);
     }
     auto g = [&](double t) { return humidityRatioFromWetBulb(tC, t, p) - W; };
+    // Saturated air (up to round-off): the wet bulb is the dry bulb.
+    if (hi == tC && std::fabs(g(hi)) <= 1e-12 * (1.0 + W)) return tC;
     if (g(hi) < 0.0)
     {
         throw std::domain_error("wet bulb: air is supersaturated (W above saturation at "
