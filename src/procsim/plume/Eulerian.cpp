@@ -176,9 +176,10 @@ Flow WindModel::flow(double speedRef, double directionFromDeg) const
 
 // ----------------------------------------------------------- transport ----
 
-Transport::Transport(const TerrainGrid& g, double kH, double kV, Advection scheme)
-    : g_(g), kH_(kH), kV_(kV), scheme_(scheme)
+Transport::Transport(const TerrainGrid& g, double kH, double kV, Advection scheme, bool trueHorizontal)
+    : g_(g), kH_(kH), kV_(kV), scheme_(scheme), trueHorizontal_(trueHorizontal)
 {
+    const double cross = trueHorizontal ? 1.0 : 0.0;
     const int nx = g.nx, ny = g.ny, nz = g.nz;
     const std::size_t n = g.size();
     c.assign(n, 0.0);
@@ -211,7 +212,7 @@ Transport::Transport(const TerrainGrid& g, double kH, double kV, Advection schem
                 const double area = g.dy * (g.zTop - g.hxf[j * (nx + 1) + i]) * dfk;
                 const double zx = (g.zc(i, j, k) - g.zc(i - 1, j, k)) / g.dx;
                 axF_[f] = kH * area / g.dx;
-                bxF_[f] = kH * area * zx;
+                bxF_[f] = cross * kH * area * zx;
             }
         for (int j = 1; j < ny; ++j)
             for (int i = 0; i < nx; ++i)
@@ -220,7 +221,7 @@ Transport::Transport(const TerrainGrid& g, double kH, double kV, Advection schem
                 const double area = g.dx * (g.zTop - g.hyf[j * nx + i]) * dfk;
                 const double zy = (g.zc(i, j, k) - g.zc(i, j - 1, k)) / g.dy;
                 ayF_[f] = kH * area / g.dy;
-                byF_[f] = kH * area * zy;
+                byF_[f] = cross * kH * area * zy;
             }
     }
     for (int k = 1; k < nz; ++k)
@@ -234,10 +235,23 @@ Transport::Transport(const TerrainGrid& g, double kH, double kV, Advection schem
                 const double zy = hy * (1 - g.fFace[k]);
                 const double area = g.dx * g.dy;
                 const double dz = g.zc(i, j, k) - g.zc(i, j, k - 1);
-                asF_[f] = area * (kV + kH * (zx * zx + zy * zy)) / dz;
-                bsxF_[f] = area * kH * zx;
-                bsyF_[f] = area * kH * zy;
+                asF_[f] = area * (kV + cross * kH * (zx * zx + zy * zy)) / dz;
+                bsxF_[f] = cross * area * kH * zx;
+                bsyF_[f] = cross * area * kH * zy;
             }
+}
+
+void Transport::setImplicitVertical(bool on)
+{
+    if (on && trueHorizontal_ && kH_ > 0)
+    {
+        bool flat = true;
+        for (std::size_t n = 0; n < bxF_.size() && flat; ++n) flat = bxF_[n] == 0.0;
+        for (std::size_t n = 0; n < byF_.size() && flat; ++n) flat = byF_[n] == 0.0;
+        if (!flat)
+            throw std::invalid_argument("true-horizontal diffusion over terrain needs the explicit vertical term");
+    }
+    implicit_ = on;
 }
 
 void Transport::setFlow(const Flow& flow)
@@ -273,7 +287,7 @@ double Transport::stableDt() const
                 const double dz = g.depth(i, j) * (g.fFace[k + 1] - g.fFace[k]);
                 const double hx = (g.hxf[j * (nx + 1) + i + 1] - g.hxf[j * (nx + 1) + i]) / g.dx;
                 const double hy = (g.hyf[(j + 1) * nx + i] - g.hyf[j * nx + i]) / g.dy;
-                const double slope2 = (hx * hx + hy * hy) * (1 - g.fCell[k]) * (1 - g.fCell[k]);
+                const double slope2 = trueHorizontal_ ? (hx * hx + hy * hy) * (1 - g.fCell[k]) * (1 - g.fCell[k]) : 0.0;
                 double diff = 0;
                 if (nx > 1) diff += kH_ / (g.dx * g.dx);
                 if (ny > 1) diff += kH_ / (g.dy * g.dy);
@@ -327,7 +341,7 @@ void Transport::residual(std::vector<double>& r)
     for (std::size_t n = 0; n < r.size(); ++n) r[n] = src_[n];
 
     // cell gradients for the cross-diffusion terms (zero on flat terrain)
-    for (int k = 0; k < nz; ++k)
+    for (int k = 0; k < (trueHorizontal_ ? nz : 0); ++k)
         for (int j = 0; j < ny; ++j)
             for (int i = 0; i < nx; ++i)
             {

@@ -134,12 +134,18 @@ enum class Advection { LimitedQuick, Quick, Upwind };
 class Transport
 {
 public:
-    Transport(const TerrainGrid& grid, double kH, double kV, Advection scheme = Advection::LimitedQuick);
+    // trueHorizontal: K_H acts along true horizontal planes (full transform,
+    // metric cross terms included); false: along the terrain-following
+    // surfaces (the cross terms and the K_H z_x^2 vertical part dropped).
+    // The cross terms are explicit and indefinite on their own, so the full
+    // transform must be run with the vertical diffusion explicit.
+    Transport(const TerrainGrid& grid, double kH, double kV, Advection scheme = Advection::LimitedQuick,
+              bool trueHorizontal = true);
 
     void setFlow(const Flow& flow);
     void setSources(std::vector<double> kgPerS);   // per cell [kg/s]
     void setBackground(double kgPerM3) { background_ = kgPerM3; }
-    void setImplicitVertical(bool on) { implicit_ = on; }
+    void setImplicitVertical(bool on);
     bool implicitVertical() const { return implicit_; }
 
     // Largest stable time step for the current flow: AB2 is stable for a
@@ -184,6 +190,7 @@ private:
     double lastOut_ = 0, prevOut_ = 0;
     bool first_ = true;
     bool implicit_ = false;
+    bool trueHorizontal_ = true;
     std::vector<double> rhsCol_, aCol_, bCol_, cCol_;
 
     void residual(std::vector<double>& r);

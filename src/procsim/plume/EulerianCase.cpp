@@ -41,7 +41,8 @@ const char* kHelp =
     "  terrain: terrain.asc              ESRI ASCII grid of elevations [m]\n"
     "  grid: {cell_size_m: 150, levels: 12, top_above_highest_m: 600, stretching: 2}\n"
     "  dispersion: {K_H_m2_s: 200, K_V_m2_s: 1, advection: limited_quick (or quick, upwind),\n"
-    "               vertical_diffusion: implicit (Crank-Nicolson) or explicit}\n"
+    "               vertical_diffusion: implicit (Crank-Nicolson) or explicit,\n"
+    "               horizontal_diffusion: along_terrain or true_horizontal (needs explicit)}\n"
     "  wind: {exponent: 0.25, reference_height_m: 10}\n"
     "  time: {dt_s: auto, cfl_fraction: 0.9}   dt_s above the stability limit is an error\n"
     "  meteorology: met.csv              hour, wind_speed_m_s, wind_direction_deg\n"
@@ -104,11 +105,19 @@ EulerianCase loadEulerianCase(const std::string& path)
     if (in.has("dispersion"))
     {
         const YamlInput d = in.child("dispersion");
-        d.rejectUnknown({"K_H_m2_s", "K_V_m2_s", "advection", "vertical_diffusion"});
+        d.rejectUnknown({"K_H_m2_s", "K_V_m2_s", "advection", "vertical_diffusion", "horizontal_diffusion"});
+        const std::string hd = d.text("horizontal_diffusion", "along_terrain");
+        if (hd == "along_terrain") c.trueHorizontal = false;
+        else if (hd == "true_horizontal") c.trueHorizontal = true;
+        else throw d.error("horizontal_diffusion", "along_terrain or true_horizontal");
         const std::string v = d.text("vertical_diffusion", "implicit");
         if (v == "implicit") c.implicitVertical = true;
         else if (v == "explicit") c.implicitVertical = false;
         else throw d.error("vertical_diffusion", "implicit (Crank-Nicolson) or explicit (AB2)");
+        if (c.trueHorizontal && c.implicitVertical)
+            throw d.error("horizontal_diffusion",
+                          "along_terrain when vertical_diffusion is implicit (true_horizontal needs "
+                          "vertical_diffusion: explicit: its metric cross terms are explicit)");
         if (d.has("K_H_m2_s")) kH = d.nonNegative("K_H_m2_s", "m2/s");
         if (d.has("K_V_m2_s")) kV = d.nonNegative("K_V_m2_s", "m2/s");
         const std::string a = d.text("advection", "limited_quick");
@@ -274,7 +283,7 @@ ScenarioResult runScenario(const EulerianCase& cs, const TerrainGrid& g, const W
     const int hours = opt.hours;
     const std::string dir = (fs::path(opt.outDir) / sc.name).string();
     fs::create_directories(fs::path(dir) / "vts");
-    Transport t(g, sc.kH, sc.kV, cs.advection);
+    Transport t(g, sc.kH, sc.kV, cs.advection, cs.trueHorizontal);
     t.setImplicitVertical(cs.implicitVertical);
     t.setBackground(cs.backgroundUgM3 * 1e-9);
     for (auto& v : t.c) v = cs.backgroundUgM3 * 1e-9;
@@ -483,7 +492,7 @@ int eulerianMain(int argc, char** argv)
     double topFlux = 0;
     for (const auto& sc : cs.scenarios)
     {
-        Transport t(g, sc.kH, sc.kV, cs.advection);
+        Transport t(g, sc.kH, sc.kV, cs.advection, cs.trueHorizontal);
         t.setImplicitVertical(cs.implicitVertical);
         for (int h = 0; h < hours; ++h)
         {

@@ -30,6 +30,7 @@ struct EulerianCase
     double stretching = 2.0;
     Advection advection = Advection::LimitedQuick;
     bool implicitVertical = true;
+    bool trueHorizontal = false;   // K_H along the terrain-following surfaces
     double exponent = 0.25, zRef = 10;
     double dt = 0;             // s, 0 = automatic
     double cflFraction = 0.9;
