@@ -569,7 +569,7 @@ int eulerianMain(int argc, char** argv)
     }
     CsvWriter table((fs::path(outDir) / "table.csv").string(), header);
     std::cout << "\n  " << std::left << std::setw(14) << "receptor";
-    for (const auto& sc : cs.scenarios) std::cout << std::right << std::setw(30) << (sc.name + " mean / max 24-h");
+    for (const auto& sc : cs.scenarios) std::cout << std::right << std::setw(34) << (sc.name + " mean / max 24-h");
     std::cout << "   [ug/m3]\n";
     for (std::size_t r = 0; r < cs.receptors.size(); ++r)
     {
@@ -590,7 +590,7 @@ int eulerianMain(int argc, char** argv)
             }
             row.push_back(fmt(mean, 4));
             row.push_back(hours >= 24 ? fmt(max24, 4) : "");
-            std::cout << std::right << std::setw(30)
+            std::cout << std::right << std::setw(34)
                       << (fmt(mean) + " / " + (hours >= 24 ? fmt(max24) : std::string("-")))
                       << (max24 > cs.standardUgM3 ? "*" : " ");
         }
