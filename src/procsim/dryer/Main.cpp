@@ -113,11 +113,17 @@ const char* kPlantHelp =
     "    piece_diameter_mm, piece_length_m   rod-shaped pieces; area = pieces x pi d L\n"
     "    specific_heat_dry_J_per_kgK    bone-dry product\n"
     "    scorch_temperature_C           product temperature that scorches\n"
-    "  kinetics:   characteristic drying curve\n"
-    "    critical_moisture_percent_db   X_cr: constant rate above, falling rate below\n"
+    "  kinetics:\n"
+    "    model                          thin-layer | characteristic-curve\n"
+    "    thin-layer: internal rate m_dry k (X - X_eq) in series with the gas film\n"
+    "      rate_constant_per_h          k at the reference temperature [1/h]\n"
+    "      reference_temperature_C      [degC]\n"
+    "      activation_energy_kJ_per_mol k = k_ref exp(-Ea/R (1/T - 1/T_ref)), T product\n"
+    "    characteristic-curve: gas-film rate x f(X)\n"
+    "      critical_moisture_percent_db X_cr: constant rate above, falling rate below\n"
     "    oswin_A_percent_db, oswin_B    equilibrium moisture X_eq = A (a/(1-a))^B at the\n"
     "                                   air's relative humidity a: rate zero at and below\n"
-    "    falling_rate_exponent          n in f = ((X - X_eq)/(X_cr - X_eq))^n\n"
+    "      falling_rate_exponent        n in f = ((X - X_eq)/(X_cr - X_eq))^n\n"
     "  operation:\n"
     "    ambient_temperature_C, ambient_relative_humidity_percent, pressure_kPa\n"
     "  run: (optional) max_time_h (30), output_interval_min (10)\n"
@@ -133,8 +139,10 @@ const char* kPlantHelp =
     "    measured: (optional) drying_time 'h:min', electricity_kWh, f1_percent, f2_percent\n"
     "  calibration: (optional)\n"
     "    fit: list of {parameter, lower, upper}; parameter one of\n"
-    "         heat_transfer_coefficient_W_per_m2K, falling_rate_exponent,\n"
+    "         heat_transfer_coefficient_W_per_m2K, rate_constant_per_h,\n"
+    "         activation_energy_kJ_per_mol, falling_rate_exponent,\n"
     "         critical_moisture_percent_db, oswin_A_percent_db, wall_UA_W_per_K,\n"
+    "         vented_fraction_all (one value shared by every venting arrangement),\n"
     "         venting.<name>.vented_fraction, venting.<name>.vent_short_circuit_fraction\n"
     "    calibrate_on: batch ids; predict: batch ids; predict_venting: a venting name\n"
     "  whatif: (optional)\n"
@@ -181,8 +189,8 @@ std::string whatifHelp()
                "\n"
                "Runs whatif.batch with whatif.venting at every hot-air temperature x vented\n"
                "fraction; flags settings whose highest product temperature exceeds\n"
-               "product.scorch_temperature_C; reports the setting with the lowest E\n"
-               "that does not scorch. Writes DIR/whatif.csv, DIR/whatif_time.png and\n"
+               "product.scorch_temperature_C; reports the settings with the lowest E\n"
+               "and the shortest drying time that do not scorch. Writes DIR/whatif.csv, DIR/whatif_time.png and\n"
                "DIR/whatif_energy.png.\n"
                "\n")
            + kPlantHelp;
@@ -616,8 +624,8 @@ int runWhatif(int argc, char** argv)
                   {"hot_air_temperature_C", "vented_fraction", "reached_target", "drying_time_h",
                    "electricity_kWh", "E_kJ_per_kg", "eta_percent", "T_product_max_C",
                    "scorched"});
-    double bestE = 1e300;
-    std::string best;
+    double bestE = 1e300, bestT = 1e300;
+    std::string best, fastest;
     std::cout << std::setw(8) << "T_hot" << std::setw(9) << "vented" << std::setw(9) << "time"
               << std::setw(10) << "E kJ/kg" << std::setw(9) << "Tp max" << "\n";
     for (double v : plant.whatifVentedFractions)
@@ -635,6 +643,13 @@ int runWhatif(int argc, char** argv)
             csv.row(std::vector<double>{T, v, r.reachedTarget ? 1.0 : 0.0, r.dryingTime / 3600,
                                         r.electricityJ / 3.6e6, r.specificEnergy / 1e3,
                                         r.eta * 100, r.tProductMax, r.scorched ? 1.0 : 0.0});
+            if (r.reachedTarget && !r.scorched && r.dryingTime < bestT)
+            {
+                bestT = r.dryingTime;
+                fastest = "hot air " + num(T, 1) + " degC, vented fraction " + num(v, 3) + ": "
+                          + hm(r.dryingTime) + " h, E = " + num(r.specificEnergy / 1e3, 0)
+                          + " kJ/kg, highest product temperature " + num(r.tProductMax, 1) + " degC";
+            }
             if (r.reachedTarget && !r.scorched && r.specificEnergy < bestE)
             {
                 bestE = r.specificEnergy;
@@ -669,7 +684,10 @@ int runWhatif(int argc, char** argv)
     if (best.empty())
         std::cout << "best setting: none reaches the target without scorching\n";
     else
+    {
         std::cout << "best setting (lowest E without scorching): " << best << "\n";
+        std::cout << "fastest setting without scorching:         " << fastest << "\n";
+    }
     std::cout << "wrote " << dir << "/whatif.csv, whatif_time.png, whatif_energy.png\n";
     return 0;
 }

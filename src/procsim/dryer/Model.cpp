@@ -183,7 +183,24 @@ struct Loop
         const double cHumid = psy::kCpAir + psy::kCpVapour * s.w;
         const double pw = psy::pwFromHumidityRatio(s.w, c.pressure);
         const double ps = psy::saturationPressure(std::clamp(tp, -100.0, 200.0));
-        mdot = relativeRate(x, s.xeq) * hA[i] / cHumid * psy::kMolarRatio * (ps - pw) / (c.pressure - pw);
+        const double ext = hA[i] / cHumid * psy::kMolarRatio * (ps - pw) / (c.pressure - pw);
+        if (c.kinetics == DryerCase::Kinetics::CharacteristicCurve)
+        {
+            mdot = relativeRate(x, s.xeq) * ext;
+            return;
+        }
+        if (x <= s.xeq || ext <= 0.0)
+        {
+            // dry below equilibrium: nothing leaves; cold wet product in humid
+            // air: condensation limited by the gas film
+            mdot = (ext < 0.0 && x > s.xeq) ? ext : 0.0;
+            return;
+        }
+        const double k = c.rateConstant
+                         * std::exp(-c.activationEnergy / 8.314462618
+                                    * (1.0 / (tp + 273.15) - 1.0 / (c.referenceC + 273.15)));
+        const double internal = mDry[i] * k * (x - s.xeq);
+        mdot = internal * ext / (internal + ext);
     }
 
     void rhs(const double* y, double* dy) const

@@ -12,9 +12,13 @@
 //   return chamber: (1 - s)*G_v humid air leaves through the vents, G - G_v recirculates
 // Trays: cart c, tray k; air share phi_ck (mean 1) from the distribution
 // field, heat-transfer coefficient h*phi_ck^n_u.  Product per tray: water
-// mass and enthalpy.  Drying: characteristic drying curve (constant rate
-// above X_cr, falling rate f = ((X - X_eq)/(X_cr - X_eq))^n below), driving
-// force p_ws(T_product) - p_w(air), Lewis analogy k = h / c_humid.  The
+// mass and enthalpy.  Gas-film evaporation capacity m_ext = h A / c_humid x
+// 0.622 (p_ws(T_product) - p_w) / (p - p_w) (Lewis analogy).  Drying, one of:
+//  thin layer (default): internal rate m_int = m_dry k(T_p) (X - X_eq),
+//    k = k_ref exp(-Ea/R (1/T_p - 1/T_ref)), in series with the gas film:
+//    m = m_int m_ext / (m_int + m_ext);
+//  characteristic curve: m = m_ext f, f = 1 above X_cr and
+//    ((X - X_eq)/(X_cr - X_eq))^n below.  The
 // equilibrium moisture X_eq follows the air's relative humidity through the
 // Oswin isotherm X_eq = A (a/(1-a))^B, so humid (badly vented) air slows the
 // end of drying.
@@ -42,6 +46,15 @@ struct DryerCase
     double cpDry = 1500;             // J/(kg K) bone-dry product
     double scorchC = 75;             // product temperature that scorches
     // kinetics
+    enum class Kinetics
+    {
+        ThinLayer,             // internal (Lewis/Arrhenius) and gas-film resistances in series
+        CharacteristicCurve,   // gas-film rate x f(X) (constant + falling rate)
+    };
+    Kinetics kinetics = Kinetics::ThinLayer;
+    double rateConstant = 0.2 / 3600;   // 1/s at the reference temperature (thin layer)
+    double referenceC = 70;             // degC
+    double activationEnergy = 20e3;     // J/mol
     double xCritical = 0.6;
     double oswinA = 0.1;             // Oswin isotherm, kg/kg dry basis
     double oswinB = 0.35;

@@ -91,13 +91,28 @@ void readProduct(const YamlInput& p, DryerCase& c)
 
 void readKinetics(const YamlInput& k, DryerCase& c)
 {
-    k.rejectUnknown({"critical_moisture_percent_db", "oswin_A_percent_db", "oswin_B",
-                     "falling_rate_exponent"});
-    c.xCritical = k.positive("critical_moisture_percent_db", "% dry basis") / 100.0;
+    k.rejectUnknown({"model", "rate_constant_per_h", "reference_temperature_C",
+                     "activation_energy_kJ_per_mol", "critical_moisture_percent_db",
+                     "falling_rate_exponent", "oswin_A_percent_db", "oswin_B"});
+    const std::string model = k.text("model");
+    if (model == "thin-layer")
+    {
+        c.kinetics = DryerCase::Kinetics::ThinLayer;
+        c.rateConstant = k.positive("rate_constant_per_h", "1/h") / 3600.0;
+        c.referenceC = k.number("reference_temperature_C", "degC");
+        c.activationEnergy = k.nonNegative("activation_energy_kJ_per_mol", "kJ/mol") * 1e3;
+    }
+    else if (model == "characteristic-curve")
+    {
+        c.kinetics = DryerCase::Kinetics::CharacteristicCurve;
+        c.xCritical = k.positive("critical_moisture_percent_db", "% dry basis") / 100.0;
+        c.fallingExponent = k.positive("falling_rate_exponent");
+    }
+    else
+        throw k.error("model", "'thin-layer' or 'characteristic-curve'");
     c.oswinA = k.nonNegative("oswin_A_percent_db", "% dry basis") / 100.0;
     c.oswinB = k.nonNegative("oswin_B");
     if (!(c.oswinB < 1.0)) throw k.error("oswin_B", "an exponent from 0 to 1");
-    c.fallingExponent = k.positive("falling_rate_exponent");
 }
 
 void readOperation(const YamlInput& o, DryerCase& c)
@@ -130,15 +145,27 @@ Venting readVenting(const YamlInput& v)
 
 std::vector<std::string> Plant::parameterNames()
 {
-    return {"heat_transfer_coefficient_W_per_m2K", "falling_rate_exponent",
+    return {"heat_transfer_coefficient_W_per_m2K", "rate_constant_per_h",
+            "activation_energy_kJ_per_mol", "falling_rate_exponent",
             "critical_moisture_percent_db", "oswin_A_percent_db", "wall_UA_W_per_K",
-            "venting.<name>.vented_fraction", "venting.<name>.vent_short_circuit_fraction"};
+            "vented_fraction_all (same in every venting)", "venting.<name>.vented_fraction",
+            "venting.<name>.vent_short_circuit_fraction"};
 }
 
 double Plant::get(const std::string& name) const
 {
     if (name == "heat_transfer_coefficient_W_per_m2K") return base.hConv;
     if (name == "falling_rate_exponent") return base.fallingExponent;
+    if (name == "rate_constant_per_h") return base.rateConstant * 3600;
+    if (name == "vented_fraction_all")
+    {
+        // one vent flow shared by every arrangement (same fans and ducts)
+        const double v = venting.begin()->second.ventedFraction;
+        for (const auto& kv : venting)
+            if (kv.second.ventedFraction != v) throw std::invalid_argument(name);
+        return v;
+    }
+    if (name == "activation_energy_kJ_per_mol") return base.activationEnergy / 1e3;
     if (name == "critical_moisture_percent_db") return base.xCritical * 100;
     if (name == "oswin_A_percent_db") return base.oswinA * 100;
     if (name == "wall_UA_W_per_K") return base.wallUA;
@@ -162,6 +189,12 @@ void Plant::set(const std::string& name, double value)
         base.hConv = value;
     else if (name == "falling_rate_exponent")
         base.fallingExponent = value;
+    else if (name == "rate_constant_per_h")
+        base.rateConstant = value / 3600;
+    else if (name == "vented_fraction_all")
+        for (auto& kv : venting) kv.second.ventedFraction = value;
+    else if (name == "activation_energy_kJ_per_mol")
+        base.activationEnergy = value * 1e3;
     else if (name == "critical_moisture_percent_db")
         base.xCritical = value / 100;
     else if (name == "oswin_A_percent_db")
@@ -366,9 +399,17 @@ void writePlant(const Plant& p, const std::string& path, const std::string& comm
       << "\n  piece_length_m: " << fmt(c.pieceLength)
       << "\n  specific_heat_dry_J_per_kgK: " << fmt(c.cpDry)
       << "\n  scorch_temperature_C: " << fmt(c.scorchC) << "\n";
-    o << "kinetics:\n  critical_moisture_percent_db: " << fmt(c.xCritical * 100)
-      << "\n  oswin_A_percent_db: " << fmt(c.oswinA * 100) << "\n  oswin_B: " << fmt(c.oswinB)
-      << "\n  falling_rate_exponent: " << fmt(c.fallingExponent) << "\n";
+    o << "kinetics:\n";
+    if (c.kinetics == DryerCase::Kinetics::ThinLayer)
+        o << "  model: thin-layer\n  rate_constant_per_h: " << fmt(c.rateConstant * 3600)
+          << "\n  reference_temperature_C: " << fmt(c.referenceC)
+          << "\n  activation_energy_kJ_per_mol: " << fmt(c.activationEnergy / 1e3) << "\n";
+    else
+        o << "  model: characteristic-curve\n  critical_moisture_percent_db: "
+          << fmt(c.xCritical * 100) << "\n  falling_rate_exponent: " << fmt(c.fallingExponent)
+          << "\n";
+    o << "  oswin_A_percent_db: " << fmt(c.oswinA * 100) << "\n  oswin_B: " << fmt(c.oswinB)
+      << "\n";
     o << "operation:\n  ambient_temperature_C: " << fmt(c.ambientC)
       << "\n  ambient_relative_humidity_percent: " << fmt(c.ambientRH * 100)
       << "\n  pressure_kPa: " << fmt(c.pressure / 1e3) << "\n";
