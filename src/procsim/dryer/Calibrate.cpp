@@ -43,7 +43,7 @@ struct BatchCost
 
 } // namespace
 
-CalibrationResult calibrate(Plant& plant)
+CalibrationResult calibrate(Plant& plant, int maxIterations)
 {
     if (plant.fit.empty() || plant.calibrateOn.empty())
         throw InputError(plant.file + ": key 'calibration' needs 'fit' and 'calibrate_on'");
@@ -86,7 +86,7 @@ CalibrationResult calibrate(Plant& plant)
     }
     ceres::Solver::Options opt;
     opt.linear_solver_type = ceres::DENSE_QR;
-    opt.max_num_iterations = 50;
+    opt.max_num_iterations = maxIterations;
     opt.function_tolerance = 1e-10;
     opt.parameter_tolerance = 1e-8;
     opt.logging_type = ceres::SILENT;

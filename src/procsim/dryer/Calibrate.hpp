@@ -19,6 +19,6 @@ struct CalibrationResult
 
 // Fits plant.fit on plant.calibrateOn; on return `plant` holds the fitted
 // values.  Residuals: relative errors of drying time and electricity.
-CalibrationResult calibrate(Plant& plant);
+CalibrationResult calibrate(Plant& plant, int maxIterations = 50);
 
 } // namespace procsim::dryer

@@ -170,7 +170,7 @@ std::string simulateHelp()
 std::string calibrateHelp()
 {
     return std::string(
-               "usage: procsim dryer calibrate PLANT.yaml [--out DIR]\n"
+               "usage: procsim dryer calibrate PLANT.yaml [--out DIR] [--max-iterations N]\n"
                "\n"
                "Fits calibration.fit on the batches calibration.calibrate_on (least squares\n"
                "on the relative errors of drying time and electricity, Ceres), then runs\n"
@@ -178,6 +178,7 @@ std::string calibrateHelp()
                "calibration.predict_venting. Writes DIR/calibration.csv (measured vs\n"
                "model: time, electricity, E, eta), DIR/calibration.png and\n"
                "DIR/calibrated.yaml (the plant file with the fitted values).\n"
+               "--max-iterations N caps the Levenberg-Marquardt iterations (default 50).\n"
                "\n")
            + kPlantHelp;
 }
@@ -537,14 +538,22 @@ int runCalibrate(int argc, char** argv)
         std::cout << calibrateHelp();
         return 0;
     }
-    const Args a = parse(argc, argv, {"--out"});
+    const Args a = parse(argc, argv, {"--out", "--max-iterations"});
     if (a.positional.size() != 1)
         throw InputError("dryer calibrate: expected one plant file (see --help)");
+    int maxIterations = 50;
+    if (a.options.count("--max-iterations"))
+    {
+        const double n = optNumber(a, "--max-iterations", "calibrate");
+        if (!(n >= 1 && n <= 1000 && n == std::floor(n)))
+            throw InputError("dryer calibrate: option '--max-iterations' expected an integer from 1 to 1000");
+        maxIterations = static_cast<int>(n);
+    }
     Plant plant = readPlant(a.positional[0]);
     if (plant.fit.empty())
         throw InputError(plant.file + ": key 'calibration' is missing (needed by calibrate)");
     const std::string dir = outDir(a);
-    const CalibrationResult cr = calibrate(plant);
+    const CalibrationResult cr = calibrate(plant, maxIterations);
     std::cout << "calibration on batches";
     for (const auto& id : plant.calibrateOn) std::cout << " " << id;
     std::cout << ": " << cr.report << "\n";
