@@ -667,28 +667,34 @@ int runWhatif(int argc, char** argv)
                        + " kJ/kg, highest product temperature " + num(r.tProductMax, 1) + " degC";
             }
         }
-        csv.row(std::vector<std::string>{});   // blank line: gnuplot data blocks
+        csv.row(std::vector<std::string>{});   // two blank lines: one gnuplot data
+        csv.row(std::vector<std::string>{});   // block per vented fraction
     }
     csv.close();
     const std::string f = dir + "/whatif.csv";
     const std::string common =
         "set datafile separator ','\nset key outside right title 'vented fraction'\n"
         "set xlabel 'hot-air temperature [degC]'\nset grid\n";
-    std::ostringstream scorchLine;
+    // one line per vented fraction (CSV data blocks), scorched points filled red
+    auto curves = [&](int column) {
+        std::string cmd = "plot ";
+        for (std::size_t i = 0; i < plant.whatifVentedFractions.size(); ++i)
+        {
+            const std::string idx = std::to_string(i), col = std::to_string(column);
+            cmd += (i ? ", " : "") + std::string("'") + f + "' index " + idx + " u 1:" + col
+                   + " w lp pt 6 lw 2 lc " + std::to_string(i + 1) + " t '"
+                   + num(plant.whatifVentedFractions[i], 3) + "', '' index " + idx
+                   + " u 1:($9>0.5?$" + col + ":1/0) w p pt 7 ps 2 lc rgb 'red' notitle";
+        }
+        return cmd + "\n";
+    };
+    const std::string title = "set title 'batch " + b.id + ", venting " + plant.whatifVenting
+                              + " (red: scorched, product above "
+                              + num(plant.base.scorchC, 0) + " degC)'\n";
     plotPng(dir + "/whatif_time.png",
-            common + "set ylabel 'drying time [h]'\nset title 'batch " + b.id
-                + " (filled: scorched, T_product > " + num(plant.base.scorchC, 0) + " degC)'\n"
-                "plot for [i=0:" + std::to_string(plant.whatifVentedFractions.size() - 1)
-                + "] '" + f + "' index i u 1:4 w lp pt 6 t columnhead(2), "
-                "for [i=0:" + std::to_string(plant.whatifVentedFractions.size() - 1) + "] '" + f
-                + "' index i u 1:($9>0.5?$4:1/0) w p pt 7 ps 2 lc rgb 'red' notitle\n");
+            common + title + "set ylabel 'drying time [h]'\n" + curves(4));
     plotPng(dir + "/whatif_energy.png",
-            common + "set ylabel 'specific energy E [kJ/kg water]'\nset title 'batch " + b.id
-                + " (filled: scorched)'\n"
-                "plot for [i=0:" + std::to_string(plant.whatifVentedFractions.size() - 1)
-                + "] '" + f + "' index i u 1:6 w lp pt 6 t sprintf('%g', column(2)), "
-                "for [i=0:" + std::to_string(plant.whatifVentedFractions.size() - 1) + "] '" + f
-                + "' index i u 1:($9>0.5?$6:1/0) w p pt 7 ps 2 lc rgb 'red' notitle\n");
+            common + title + "set ylabel 'specific energy E [kJ/kg water]'\n" + curves(6));
     std::cout << "\nscorch limit: product temperature " << num(plant.base.scorchC, 1) << " degC\n";
     if (best.empty())
         std::cout << "best setting: none reaches the target without scorching\n";
