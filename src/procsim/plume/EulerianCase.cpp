@@ -407,7 +407,7 @@ void writeScenarioOutputs(const EulerianCase& cs, const TerrainGrid& g, const Sc
         for (const auto& r : cs.receptors) rf << r.x << ' ' << r.y << ' ' << r.name << '\n';
     }
     std::ostringstream gp;
-    gp << "set size ratio -1\nset xlabel 'x (east) [m]'\nset ylabel 'y (north) [m]'\n"
+    gp << "set termoption noenhanced\nset size ratio -1\nset xlabel 'x (east) [m]'\nset ylabel 'y (north) [m]'\n"
           "set title 'Scenario " << sc.name << ": ground-level PM10, mean over " << hours
        << " h [ug/m3]; dashed: terrain contours'\n"
           "set xrange [" << g.x0 << ":" << g.x0 + g.nx * g.dx << "]\nset yrange [" << g.y0 << ":"
@@ -424,7 +424,7 @@ void writeScenarioOutputs(const EulerianCase& cs, const TerrainGrid& g, const Sc
     if (hours >= 24)
     {
         std::ostringstream p2;
-        p2 << "set datafile separator ','\nset key outside right\nset xlabel 'day'\nset ylabel "
+        p2 << "set termoption noenhanced\nset datafile separator ','\nset key outside right\nset xlabel 'day'\nset ylabel "
               "'24-h average PM10 [ug/m3]'\nset title 'Scenario " << sc.name << ": 24-h averages at the receptors'\n"
               "set grid\nplot for [c=2:" << nr + 1 << "] '" << dir
            << "/receptors_24h.csv' using 1:c with linespoints title columnheader(c), "

@@ -226,7 +226,7 @@ int gaussianMain(int argc, char** argv)
     if (days > 0)
     {
         std::ostringstream gp;
-        gp << "set datafile separator ','\nset key outside right\nset xlabel 'day'\nset ylabel '24-h average PM10 [ug/m3]'\n"
+        gp << "set termoption noenhanced\nset datafile separator ','\nset key outside right\nset xlabel 'day'\nset ylabel '24-h average PM10 [ug/m3]'\n"
               "set title 'Gaussian plume: 24-h averages at the receptors'\nset grid\nplot for [c=2:"
            << nr + 1 << "] '" << (fs::path(outDir) / "daily.csv").string()
            << "' using 1:c with linespoints title columnheader(c), " << setup.standardUgM3

@@ -461,7 +461,7 @@ int monteCarloMain(int argc, char** argv)
         }
         d.close();
         std::ostringstream gp;
-        gp << "set datafile separator ','\nset key top right\nset xlabel 'day of the year'\n"
+        gp << "set termoption noenhanced\nset datafile separator ','\nset key top right\nset xlabel 'day of the year'\n"
               "set ylabel '24-h average PM10 [ug/m3]'\nset xrange [1:365]\nset grid\n"
               "set title 'Receptor " << name << ": " << years << " synthetic years (w = " << w << ")'\n"
               "plot '" << dfile << "' using 1:3:5 with filledcurves lc rgb '#cfe2ff' title '5th-95th percentile', "
