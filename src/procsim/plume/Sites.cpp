@@ -15,7 +15,17 @@ std::vector<Source> parseSources(const YamlInput& list)
         s.x = it.number("x_m", "m");
         s.y = it.number("y_m", "m");
         s.rate = it.nonNegative("rate_g_s", "g/s") * 1e-3;
-        s.controlled = it.has("controlled") ? it.node()["controlled"].as<bool>(true) : true;
+        if (it.has("controlled"))
+        {
+            try
+            {
+                s.controlled = it.node()["controlled"].as<bool>();
+            }
+            catch (const YAML::Exception&)
+            {
+                throw it.error("controlled", "true or false");
+            }
+        }
         if (type == "point")
         {
             it.rejectUnknown({"name", "type", "x_m", "y_m", "height_m", "rate_g_s", "controlled"});

@@ -347,10 +347,11 @@ TEST(EulerianFlatTerrain, TransformEqualsCartesianScheme)
     const int nx = 16, ny = 9, nz = 6;
     const double dx = 50, dy = 40, depth = 300, u10 = 2.0, p = 0.25;
     for (double elevation : {0.0, 350.0})
+    for (bool trueHorizontal : {true, false})
     {
         TerrainGrid g = TerrainGrid::box(nx, ny, nz, 0.0, 0.0, dx, dy, elevation + depth, elevation);
         WindModel wind(g, p, 10.0);
-        Transport t(g, 30.0, 2.0);
+        Transport t(g, 30.0, 2.0, Advection::LimitedQuick, trueHorizontal);
         t.setFlow(wind.flow(u10, 270.0));
         std::vector<double> src(g.size(), 0.0);
         src[g.idx(3, 4, 1)] = 1.0;
