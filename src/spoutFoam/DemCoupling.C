@@ -102,6 +102,16 @@ std::vector<Vec3> toVec3(const Foam::vectorField& field)
     return out;
 }
 
+// A cell field the coupling computes and writes with the gas fields.
+Foam::IOobject outputField(const Foam::fvMesh& mesh, const Foam::word& name)
+{
+    return Foam::IOobject
+    (
+        name, mesh.time().timeName(), mesh,
+        Foam::IOobject::NO_READ, Foam::IOobject::AUTO_WRITE
+    );
+}
+
 } // namespace
 
 
@@ -137,42 +147,22 @@ DemCoupling::DemCoupling
     vtk_(mesh.time().globalPath()/"particles", "particles"),
     Ksl_
     (
-        Foam::IOobject
-        (
-            "Ksl", mesh.time().timeName(), mesh,
-            Foam::IOobject::NO_READ, Foam::IOobject::AUTO_WRITE
-        ),
-        mesh,
+        outputField(mesh, "Ksl"), mesh,
         Foam::dimensionedScalar(Foam::dimDensity/Foam::dimTime, Foam::Zero)
     ),
     Us_
     (
-        Foam::IOobject
-        (
-            "Us", mesh.time().timeName(), mesh,
-            Foam::IOobject::NO_READ, Foam::IOobject::AUTO_WRITE
-        ),
-        mesh,
+        outputField(mesh, "Us"), mesh,
         Foam::dimensionedVector(Foam::dimVelocity, Foam::Zero)
     ),
     solidFraction_
     (
-        Foam::IOobject
-        (
-            "solidFraction", mesh.time().timeName(), mesh,
-            Foam::IOobject::NO_READ, Foam::IOobject::AUTO_WRITE
-        ),
-        mesh,
+        outputField(mesh, "solidFraction"), mesh,
         Foam::dimensionedScalar(Foam::dimless, Foam::Zero)
     ),
     solidFlux_
     (
-        Foam::IOobject
-        (
-            "solidFlux", mesh.time().timeName(), mesh,
-            Foam::IOobject::NO_READ, Foam::IOobject::AUTO_WRITE
-        ),
-        mesh,
+        outputField(mesh, "solidFlux"), mesh,
         Foam::dimensionedVector(Foam::dimVelocity, Foam::Zero)
     )
 {
