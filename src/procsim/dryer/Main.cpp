@@ -162,7 +162,8 @@ std::string simulateHelp()
                "                    deviation from the mean [%], product temperature\n"
                "  <id>_tray_moisture.csv  moisture of every tray over time\n"
                "  <id>_batch.png    air temperatures and moisture over time\n"
-               "  simulate_summary.csv  drying time, electricity, E, eta, f1, f2, balances\n"
+               "  simulate_summary.csv  drying time, electricity, E, eta, f1, f2, wall\n"
+               "                    condensate [kg], water and energy balance residuals\n"
                "\n")
            + kPlantHelp;
 }
@@ -467,14 +468,18 @@ void writeBatchOutputs(const std::string& dir, const DryerCase& c, const BatchRe
     }
     const std::string csv = base + "_series.csv";
     plotPng(base + "_batch.png",
-            "set datafile separator ','\nset key autotitle columnhead outside bottom\n"
-            "set multiplot layout 2,1 title 'batch " + c.name + "'\n"
-            "set ylabel 'temperature [degC]'\nset xlabel 'time [h]'\n"
+            "set termoption noenhanced\nset datafile separator ','\n"
+            "set key autotitle columnhead outside right\nset grid\n"
+            "set multiplot layout 3,1 title 'batch " + c.name + "'\n"
+            "set ylabel 'temperature [degC]'\n"
             "plot '" + csv + "' u 1:2 w l lw 2, '' u 1:3 w l lw 2, '' u 1:10 w l, '' u 1:11 w l\n"
-            "set ylabel 'moisture [% dry basis]'\n"
+            "set ylabel 'return air RH [%]'\nset y2label 'heater [kW]'\nset y2tics\n"
+            "plot '" + csv + "' u 1:6 w l lw 2, '' u 1:12 axes x1y2 w l\n"
+            "unset y2label\nunset y2tics\n"
+            "set ylabel 'moisture [% dry basis]'\nset xlabel 'time [h]'\n"
             "plot '" + csv + "' u 1:7 w l lw 2, '' u 1:8 w l, '' u 1:9 w l\n"
             "unset multiplot\n",
-            900, 800);
+            1000, 1000);
 }
 
 int runSimulate(int argc, char** argv)
@@ -497,7 +502,7 @@ int runSimulate(int argc, char** argv)
     CsvWriter sum(dir + "/simulate_summary.csv",
                   {"batch", "reached_target", "drying_time_h", "electricity_kWh",
                    "evaporated_water_kg", "E_kJ_per_kg", "eta_percent", "T_product_max_C",
-                   "scorched", "f1_percent", "f2_percent", "water_balance_rel",
+                   "scorched", "f1_percent", "f2_percent", "condensate_kg", "water_balance_rel",
                    "energy_balance_rel"});
     std::cout << std::left << std::setw(7) << "batch" << std::right << std::setw(8) << "time"
               << std::setw(10) << "kWh" << std::setw(10) << "water kg" << std::setw(10) << "E kJ/kg"
@@ -523,7 +528,7 @@ int runSimulate(int argc, char** argv)
             b->id, r.reachedTarget ? "1" : "0", num(r.dryingTime / 3600, 4),
             num(r.electricityJ / 3.6e6, 3), num(r.waterEvaporated, 3), num(r.specificEnergy / 1e3, 3),
             num(r.eta * 100, 3), num(r.tProductMax, 3), r.scorched ? "1" : "0", num(r.f1, 2),
-            num(r.f2, 2), wb.str(), eb.str()});
+            num(r.f2, 2), num(r.condensateKg, 3), wb.str(), eb.str()});
     }
     sum.close();
     std::cout << "\nwrote " << dir << "/simulate_summary.csv and per-batch CSV/PNG\n";
@@ -599,7 +604,8 @@ int runCalibrate(int argc, char** argv)
     csv.close();
     const std::string f = dir + "/calibration.csv";
     plotPng(dir + "/calibration.png",
-            "set datafile separator ','\nset multiplot layout 1,2 title 'calibrated on "
+            "set termoption noenhanced\nset datafile separator ','\n"
+            "set multiplot layout 1,2 title 'calibrated on "
             "old-dryer batches, predicted with the modified venting'\n"
             "set style data histograms\nset style histogram clustered gap 1\n"
             "set style fill solid 0.7 border -1\nset key top left\nset yrange [0:*]\n"
@@ -673,7 +679,8 @@ int runWhatif(int argc, char** argv)
     csv.close();
     const std::string f = dir + "/whatif.csv";
     const std::string common =
-        "set datafile separator ','\nset key outside right title 'vented fraction'\n"
+        "set termoption noenhanced\nset datafile separator ','\n"
+        "set key outside right title 'vented fraction'\n"
         "set xlabel 'hot-air temperature [degC]'\nset grid\n";
     // one line per vented fraction (CSV data blocks), scorched points filled red
     auto curves = [&](int column) {

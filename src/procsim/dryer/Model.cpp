@@ -97,6 +97,8 @@ namespace
 {
 
 // State layout: [m_w(0..n-1), H_p(0..n-1), W_r, h_r, counters...]
+constexpr double kCondensationRate = 10.0;   // x circulation, kg/s per unit (W - W_s)
+
 enum Counter
 {
     kHeater = 0,
@@ -106,6 +108,8 @@ enum Counter
     kVentHIn,
     kVentWOut,
     kVentWIn,
+    kCondensateW,   // water condensed on walls from supersaturated return air
+    kCondensateH,   // its enthalpy (liquid at the return-air temperature)
     kCounters
 };
 
@@ -220,9 +224,15 @@ struct Loop
         }
         const double tr = psy::temperatureFromEnthalpy(hr, wr);
         const double qWall = c.wallUA * (tr - c.ambientC);
+        // Return air above saturation (warm-up of a wet load): the excess
+        // condenses on the walls and drains, relaxing within ~0.1 of the
+        // air-holdup residence time.  The latent heat stays in the air.
+        const double wsr = psy::saturationHumidityRatio(std::clamp(tr, -100.0, 200.0), c.pressure);
+        const double cond = wr > wsr ? kCondensationRate * c.circulation * (wr - wsr) : 0.0;
+        const double hCond = cond * psy::kCpWater * tr;
         const double sc = c.ventShortCircuit;
-        dy[2 * n] = (gt * (s.w - wr) + sumM) / c.airHoldup;
-        dy[2 * n + 1] = (gt * (s.h - hr) + sumE - qWall) / c.airHoldup;
+        dy[2 * n] = (gt * (s.w - wr) + sumM - cond) / c.airHoldup;
+        dy[2 * n + 1] = (gt * (s.h - hr) + sumE - qWall - hCond) / c.airHoldup;
         double* k = dy + 2 * n + 2;
         k[kHeater] = s.heater;
         k[kFan] = c.fanPower;
@@ -231,6 +241,8 @@ struct Loop
         k[kVentHIn] = gv * hAmb;
         k[kVentWOut] = (1.0 - sc) * gv * wr + sc * gv * wAmb;
         k[kVentWIn] = gv * wAmb;
+        k[kCondensateW] = cond;
+        k[kCondensateH] = hCond;
     }
 
     double xAverage(const double* y) const
@@ -245,7 +257,7 @@ struct Loop
         double w = 0;
         for (std::size_t i = 0; i < n; ++i) w += y[i];
         const double* k = y + 2 * n + 2;
-        return w + c.airHoldup * y[2 * n] + k[kVentWOut] - k[kVentWIn];
+        return w + c.airHoldup * y[2 * n] + k[kVentWOut] - k[kVentWIn] + k[kCondensateW];
     }
 
     double energyInvariant(const double* y) const
@@ -254,7 +266,7 @@ struct Loop
         for (std::size_t i = 0; i < n; ++i) e += y[n + i];
         const double* k = y + 2 * n + 2;
         return e + c.airHoldup * y[2 * n + 1] + k[kVentHOut] - k[kVentHIn] + k[kWall]
-               - k[kHeater] - k[kFan];
+               + k[kCondensateH] - k[kHeater] - k[kFan];
     }
 };
 
@@ -360,7 +372,7 @@ BatchResult simulate(const DryerCase& c, double latentPerKg)
     for (std::size_t k = 0; k < kCounters; ++k)
     {
         y[2 * n + 2 + k] = 0.0;
-        at[2 * n + 2 + k] = (k == kVentWOut || k == kVentWIn) ? 1e-6 : 10.0;
+        at[2 * n + 2 + k] = (k == kVentWOut || k == kVentWIn || k == kCondensateW) ? 1e-6 : 10.0;
     }
     const double water0 = L.waterInvariant(y), energy0 = L.energyInvariant(y);
     const double productWater0 = L.xAverage(y) * c.dryMass;
@@ -407,6 +419,7 @@ BatchResult simulate(const DryerCase& c, double latentPerKg)
     r.fanJ = k[kFan];
     r.wallLossJ = k[kWall];
     r.ventNetJ = k[kVentHOut] - k[kVentHIn];
+    r.condensateKg = k[kCondensateW];
     r.electricityJ = r.heaterJ + r.fanJ;
     r.waterEvaporated = productWater0 - L.xAverage(y) * c.dryMass;
     r.specificEnergy = r.electricityJ / r.waterEvaporated;

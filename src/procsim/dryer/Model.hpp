@@ -10,6 +10,7 @@
 //   supply G - s*G_v (recirculated + the rest of the make-up air) passes over
 //             the trays into the return chamber
 //   return chamber: (1 - s)*G_v humid air leaves through the vents, G - G_v recirculates
+// Return air above saturation condenses on the walls and drains.
 // Trays: cart c, tray k; air share phi_ck (mean 1) from the distribution
 // field, heat-transfer coefficient h*phi_ck^n_u.  Product per tray: water
 // mass and enthalpy.  Gas-film evaporation capacity m_ext = h A / c_humid x
@@ -111,6 +112,7 @@ struct BatchResult
     double electricityJ = 0;      // heaters + fans up to dryingTime
     double heaterJ = 0, fanJ = 0, wallLossJ = 0, ventNetJ = 0;
     double waterEvaporated = 0;   // kg (product water lost)
+    double condensateKg = 0;      // kg condensed on the walls (supersaturated return air)
     double specificEnergy = 0;    // J/kg
     double eta = 0;               // with the given latent heat per kg
     double latentPerKg = 0;
