@@ -302,6 +302,10 @@ struct Cvode
     }
 };
 
+// CVODE's own messages would add lines to procsim's one-line errors; the
+// failure is reported by check() instead.
+void quietCvode(int, const char*, const char*, char*, void*) {}
+
 void check(int flag, const char* what)
 {
     if (flag < 0) throw std::runtime_error(std::string("CVODE ") + what + " failed, flag "
@@ -379,6 +383,7 @@ BatchResult simulate(const DryerCase& c, double latentPerKg)
 
     cv.mem = CVodeCreate(CV_BDF, cv.ctx);
     check(CVodeInit(cv.mem, cvRhs, 0.0, cv.y), "init");
+    check(CVodeSetErrHandlerFn(cv.mem, quietCvode, nullptr), "error handler");
     check(CVodeSetUserData(cv.mem, const_cast<Loop*>(&L)), "user data");
     check(CVodeSVtolerances(cv.mem, c.relTol, cv.atol), "tolerances");
     cv.A = SUNDenseMatrix(static_cast<sunindextype>(N), static_cast<sunindextype>(N), cv.ctx);
