@@ -9,6 +9,8 @@ to north-east through the plants.  Outputs (next to this script):
   met_gaussian.csv     three days of hourly meteorology with T, mixing height, cloud
   met_history.csv      three years of hourly "historical" meteorology for the
                        Monte Carlo fits (prevailing south-east wind, dry/wet season)
+  measured_24h.csv     invented 24-h "monitoring station" values at P1 for the week,
+                       to show the measured-vs-predicted plot (not data)
 The case files (eulerian.yaml, gaussian.yaml, montecarlo.yaml) are written by hand.
 """
 import math
@@ -79,9 +81,17 @@ def write_full(path, rng, hours, first_day):
             f.write(f"{h},{u:.2f},{d:.1f},{t:.1f},{mh:.0f},{c:.1f}\n")
 
 
+def write_measured(rng):
+    with open(os.path.join(HERE, "measured_24h.csv"), "w") as f:
+        f.write("day,P1 [ug/m3]\n")
+        for day in range(1, 8):
+            f.write(f"{day},{rng.uniform(80, 135):.1f}\n")
+
+
 if __name__ == "__main__":
     rng = random.Random(2000)
     write_terrain()
     write_week(rng)
     write_full("met_gaussian.csv", rng, 72, 6)
     write_full("met_history.csv", rng, 3 * 8760, 1)
+    write_measured(rng)

@@ -50,7 +50,8 @@ const char* kHelp =
     "               bottom_m, top_m, rate_g_s, controlled: true}]\n"
     "  receptors: [{name, x_m, y_m, height_m}]\n"
     "  scenarios: [{name, K_V_m2_s, K_H_m2_s, reduction}]   (default: one, no reduction)\n"
-    "  output: {vts_every_h: 6, background_ug_m3: 0, standard_24h_ug_m3: 120}\n"
+    "  output: {vts_every_h: 6, background_ug_m3: 0, standard_24h_ug_m3: 120,\n"
+    "           measured_24h: measured.csv}   day, '<receptor> [ug/m3]' columns (< 0: none)\n"
     "\n"
     "Writes per scenario: receptors_hourly.csv, receptors_24h.csv, receptors_weekly.csv,\n"
     "ground_mean.csv/.png, receptors_24h.png, C.pvd + vts/*.vts (ParaView); and\n"
@@ -148,7 +149,7 @@ EulerianCase loadEulerianCase(const std::string& path)
     if (in.has("output"))
     {
         const YamlInput o = in.child("output");
-        o.rejectUnknown({"vts_every_h", "background_ug_m3", "standard_24h_ug_m3"});
+        o.rejectUnknown({"vts_every_h", "background_ug_m3", "standard_24h_ug_m3", "measured_24h"});
         if (o.has("vts_every_h"))
         {
             c.vtsEveryHours = static_cast<int>(o.integer("vts_every_h"));
@@ -160,6 +161,24 @@ EulerianCase loadEulerianCase(const std::string& path)
     c.met = readMet(resolve(c.dir, in.text("meteorology")), false);
     c.sources = parseSources(in.child("sources"));
     c.receptors = parseReceptors(in.child("receptors"));
+    c.measured24h.assign(c.receptors.size(), {});
+    if (in.has("output") && in.child("output").has("measured_24h"))
+    {
+        const std::string mpath = resolve(c.dir, in.child("output").text("measured_24h"));
+        const CsvTable t = readCsv(mpath);
+        const std::size_t cd = t.column("day", mpath);
+        for (std::size_t col = 0; col < t.header.size(); ++col)
+        {
+            if (col == cd) continue;
+            std::size_t r = 0;
+            while (r < c.receptors.size() && t.header[col] != c.receptors[r].name + " [ug/m3]") ++r;
+            if (r == c.receptors.size())
+                throw InputError(mpath + ": column '" + t.header[col]
+                                 + "' names no receptor (expected '<receptor> [ug/m3]')");
+            for (const auto& row : t.rows)
+                if (row[col] >= 0) c.measured24h[r].emplace_back(static_cast<int>(std::lround(row[cd])), row[col]);
+        }
+    }
     if (in.has("scenarios"))
     {
         for (const auto& s : in.child("scenarios").items())
@@ -430,6 +449,39 @@ void writeScenarioOutputs(const EulerianCase& cs, const TerrainGrid& g, const Sc
            << "/receptors_24h.csv' using 1:c with linespoints title columnheader(c), "
            << cs.standardUgM3 << " with lines lw 2 lc rgb 'red' title 'standard'\n";
         plotPng(dir + "/receptors_24h.png", p2.str());
+    }
+    // measured vs predicted 24-h averages (the paper's Fig 2)
+    for (std::size_t r = 0; r < nr; ++r)
+    {
+        const auto& m = cs.measured24h[r];
+        if (m.empty() || hours < 24) continue;
+        const std::string name = cs.receptors[r].name;
+        const std::string file = dir + "/measured_" + name + ".csv";
+        CsvWriter w(file, {"day", "measured [ug/m3]", "predicted [ug/m3]"});
+        double sm = 0, sp = 0;
+        int n = 0;
+        for (const auto& [day, value] : m)
+        {
+            if (day < 1 || day * 24 > hours) continue;
+            double pred = 0;
+            for (int h = (day - 1) * 24; h < day * 24; ++h) pred += res.hourly[r][h] / 24;
+            w.row(std::vector<double>{static_cast<double>(day), value, pred});
+            sm += value;
+            sp += pred;
+            ++n;
+        }
+        w.close();
+        if (n == 0) continue;
+        std::cout << "  [" << sc.name << "] " << name << ": " << n << " measured days, mean measured "
+                  << fmt(sm / n) << ", predicted " << fmt(sp / n) << " ug/m3 (ratio " << fmt(sp / sm, 3) << ")\n";
+        std::ostringstream p3;
+        p3 << "set termoption noenhanced\nset datafile separator ','\nset key top left\nset xlabel 'day'\n"
+              "set ylabel '24-h average PM10 [ug/m3]'\nset grid\nset yrange [0:*]\n"
+              "set title 'Scenario " << sc.name << ", receptor " << name << ": predicted and measured'\n"
+              "plot '" << file << "' using 1:3 with linespoints lw 2 pt 7 title 'predicted', "
+              "'' using 1:2 with points pt 5 ps 1.3 title 'measured', "
+           << cs.standardUgM3 << " with lines lc rgb 'red' title 'standard'\n";
+        plotPng(dir + "/measured_" + name + ".png", p3.str());
     }
 }
 

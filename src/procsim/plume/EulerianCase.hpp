@@ -37,6 +37,8 @@ struct EulerianCase
     double backgroundUgM3 = 0;
     double standardUgM3 = 120;
     int vtsEveryHours = 6;
+    // measured 24-h averages (output.measured_24h): per receptor, (day, value)
+    std::vector<std::vector<std::pair<int, double>>> measured24h;
     MetSeries met;
     std::vector<Source> sources;
     std::vector<Receptor> receptors;
