@@ -17,6 +17,34 @@ public:
 
 bool isHelp(const std::string& arg);
 
+// Walks a subcommand's arguments (argv[0] is the subcommand): options with
+// values and positional words, with one-line errors naming the command and
+// the option.
+class ArgReader
+{
+public:
+    ArgReader(std::string command, int argc, char** argv);
+
+    bool next();                        // advance; false after the last
+    const std::string& arg() const { return arg_; }
+    bool isOption() const { return !arg_.empty() && arg_[0] == '-'; }
+
+    std::string value();                // the option's value: the next argument
+    long positiveInteger();             // value() as a whole number > 0
+
+    // "<command>: unknown option '-x' (see procsim <helpPath> --help)"
+    InputError unknown(const std::string& helpPath) const;
+    // "<command>: more than one case file given ('b.yaml')"
+    InputError extraPositional() const;
+
+private:
+    std::string command_;
+    int argc_;
+    char** argv_;
+    int index_ = 0;
+    std::string arg_;
+};
+
 // Runs a subcommand, turning InputError (and other exceptions) into one
 // line on stderr and exit status 1.
 int runGuarded(int (*run)(int, char**), int argc, char** argv);

@@ -492,36 +492,21 @@ int eulerianMain(int argc, char** argv)
     std::string casePath, outDir = "results";
     int hoursLimit = 0;
     unsigned threads = std::max(1u, std::thread::hardware_concurrency());
-    for (int a = 1; a < argc; ++a)
+    ArgReader args("eulerian", argc, argv);
+    while (args.next())
     {
-        const std::string arg = argv[a];
+        const std::string& arg = args.arg();
         if (isHelp(arg))
         {
             std::cout << kHelp;
             return 0;
         }
-        auto value = [&]() -> std::string {
-            if (a + 1 >= argc) throw InputError("eulerian: option " + arg + " expects a value");
-            return argv[++a];
-        };
-        auto count = [&](const std::string& v) {
-            try
-            {
-                const long n = std::stol(v);
-                if (n > 0) return static_cast<int>(n);
-            }
-            catch (const std::exception&)
-            {
-            }
-            throw InputError("eulerian: option " + arg + " expects a positive integer, got '" + v + "'");
-        };
-        if (arg == "-o") outDir = value();
-        else if (arg == "--hours") hoursLimit = count(value());
-        else if (arg == "--threads") threads = static_cast<unsigned>(count(value()));
-        else if (!arg.empty() && arg[0] == '-')
-            throw InputError("eulerian: unknown option '" + arg + "' (see procsim plume eulerian --help)");
+        if (arg == "-o") outDir = args.value();
+        else if (arg == "--hours") hoursLimit = static_cast<int>(args.positiveInteger());
+        else if (arg == "--threads") threads = static_cast<unsigned>(args.positiveInteger());
+        else if (args.isOption()) throw args.unknown("plume eulerian");
         else if (casePath.empty()) casePath = arg;
-        else throw InputError("eulerian: more than one case file given ('" + arg + "')");
+        else throw args.extraPositional();
     }
     if (casePath.empty())
     {

@@ -126,23 +126,19 @@ GaussianSetup parseGaussianSetup(const YamlInput& in)
 int gaussianMain(int argc, char** argv)
 {
     std::string casePath, outDir = "results";
-    for (int a = 1; a < argc; ++a)
+    ArgReader args("gaussian", argc, argv);
+    while (args.next())
     {
-        const std::string arg = argv[a];
+        const std::string& arg = args.arg();
         if (isHelp(arg))
         {
             std::cout << kHelp;
             return 0;
         }
-        if (arg == "-o")
-        {
-            if (a + 1 >= argc) throw InputError("gaussian: option -o expects a directory");
-            outDir = argv[++a];
-        }
-        else if (!arg.empty() && arg[0] == '-')
-            throw InputError("gaussian: unknown option '" + arg + "' (see procsim plume gaussian --help)");
+        if (arg == "-o") outDir = args.value();
+        else if (args.isOption()) throw args.unknown("plume gaussian");
         else if (casePath.empty()) casePath = arg;
-        else throw InputError("gaussian: more than one case file given ('" + arg + "')");
+        else throw args.extraPositional();
     }
     if (casePath.empty())
     {

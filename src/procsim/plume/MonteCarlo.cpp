@@ -176,42 +176,26 @@ int monteCarloMain(int argc, char** argv)
     long yearsOpt = 0, threadsOpt = 0;
     bool haveSeed = false;
     unsigned long long seedOpt = 0;
-    for (int a = 1; a < argc; ++a)
+    ArgReader args("montecarlo", argc, argv);
+    while (args.next())
     {
-        const std::string arg = argv[a];
+        const std::string& arg = args.arg();
         if (isHelp(arg))
         {
             std::cout << kHelp;
             return 0;
         }
-        auto value = [&]() -> std::string {
-            if (a + 1 >= argc) throw InputError("montecarlo: option " + arg + " expects a value");
-            return argv[++a];
-        };
-        auto positive = [&](const std::string& v) {
-            try
-            {
-                std::size_t pos = 0;
-                const long n = std::stol(v, &pos);
-                if (n > 0 && pos == v.size()) return n;
-            }
-            catch (const std::exception&)
-            {
-            }
-            throw InputError("montecarlo: option " + arg + " expects a positive integer, got '" + v + "'");
-        };
-        if (arg == "-o") outDir = value();
-        else if (arg == "--years") yearsOpt = positive(value());
-        else if (arg == "--threads") threadsOpt = positive(value());
+        if (arg == "-o") outDir = args.value();
+        else if (arg == "--years") yearsOpt = args.positiveInteger();
+        else if (arg == "--threads") threadsOpt = args.positiveInteger();
         else if (arg == "--seed")
         {
-            seedOpt = static_cast<unsigned long long>(positive(value()));
+            seedOpt = static_cast<unsigned long long>(args.positiveInteger());
             haveSeed = true;
         }
-        else if (!arg.empty() && arg[0] == '-')
-            throw InputError("montecarlo: unknown option '" + arg + "' (see procsim plume montecarlo --help)");
+        else if (args.isOption()) throw args.unknown("plume montecarlo");
         else if (casePath.empty()) casePath = arg;
-        else throw InputError("montecarlo: more than one case file given ('" + arg + "')");
+        else throw args.extraPositional();
     }
     if (casePath.empty())
     {
