@@ -1,11 +1,18 @@
 #include "common/YamlInput.hpp"
 
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
 namespace procsim
 {
+
+std::string relativeTo(const std::string& dir, const std::string& path)
+{
+    if (path.empty() || std::filesystem::path(path).is_absolute()) return path;
+    return (std::filesystem::path(dir) / path).lexically_normal().string();
+}
 
 YamlInput YamlInput::load(const std::string& path)
 {

@@ -11,6 +11,10 @@
 namespace procsim
 {
 
+// A file named in an input, taken relative to the directory dir of that
+// input unless it is absolute.
+std::string relativeTo(const std::string& dir, const std::string& path);
+
 class YamlInput
 {
 public:

@@ -57,12 +57,6 @@ const char* kHelp =
     "ground_mean.csv/.png, receptors_24h.png, C.pvd + vts/*.vts (ParaView); and\n"
     "table.csv (run mean and highest 24-h average per receptor and scenario).\n";
 
-std::string resolve(const std::string& dir, const std::string& p)
-{
-    if (p.empty() || fs::path(p).is_absolute()) return p;
-    return (fs::path(dir) / p).lexically_normal().string();
-}
-
 } // namespace
 
 std::unique_ptr<TerrainGrid> EulerianCase::makeGrid() const
@@ -85,7 +79,7 @@ EulerianCase loadEulerianCase(const std::string& path)
     EulerianCase c;
     c.file = path;
     c.dir = fs::path(path).parent_path().string();
-    c.terrain = readEsriGrid(resolve(c.dir, in.text("terrain")));
+    c.terrain = readEsriGrid(relativeTo(c.dir, in.text("terrain")));
     c.cellSize = c.terrain.cell;
     if (in.has("grid"))
     {
@@ -158,13 +152,13 @@ EulerianCase loadEulerianCase(const std::string& path)
         c.backgroundUgM3 = o.has("background_ug_m3") ? o.nonNegative("background_ug_m3", "ug/m3") : 0.0;
         if (o.has("standard_24h_ug_m3")) c.standardUgM3 = o.positive("standard_24h_ug_m3", "ug/m3");
     }
-    c.met = readMet(resolve(c.dir, in.text("meteorology")), false);
+    c.met = readMet(relativeTo(c.dir, in.text("meteorology")), false);
     c.sources = parseSources(in.child("sources"));
     c.receptors = parseReceptors(in.child("receptors"));
     c.measured24h.assign(c.receptors.size(), {});
     if (in.has("output") && in.child("output").has("measured_24h"))
     {
-        const std::string mpath = resolve(c.dir, in.child("output").text("measured_24h"));
+        const std::string mpath = relativeTo(c.dir, in.child("output").text("measured_24h"));
         const CsvTable t = readCsv(mpath);
         const std::size_t cd = t.column("day", mpath);
         for (std::size_t col = 0; col < t.header.size(); ++col)

@@ -10,6 +10,7 @@
 #include "common/Cli.hpp"
 #include "common/Csv.hpp"
 #include "common/Plot.hpp"
+#include "common/YamlInput.hpp"
 
 namespace fs = std::filesystem;
 
@@ -44,12 +45,6 @@ const char* kHelp =
     "\n"
     "Writes hourly.csv (class, wind and 1-h concentrations), daily.csv (24-h\n"
     "averages), daily.png and a summary on the screen.\n";
-
-std::string resolve(const std::string& dir, const std::string& p)
-{
-    if (p.empty() || fs::path(p).is_absolute()) return p;
-    return (fs::path(dir) / p).lexically_normal().string();
-}
 
 } // namespace
 
@@ -151,7 +146,7 @@ int gaussianMain(int argc, char** argv)
     in.rejectUnknown(keys);
     const GaussianSetup setup = parseGaussianSetup(in);
     const std::string dir = fs::path(casePath).parent_path().string();
-    const MetSeries met = readMet(resolve(dir, in.text("meteorology")), true);
+    const MetSeries met = readMet(relativeTo(dir, in.text("meteorology")), true);
     const GaussianModel model(setup.sources, setup.options);
 
     fs::create_directories(outDir);

@@ -58,12 +58,6 @@ const char* kHelp =
 
 const int kMonthDays[12] = {31, 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};
 
-std::string resolve(const std::string& dir, const std::string& p)
-{
-    if (p.empty() || fs::path(p).is_absolute()) return p;
-    return (fs::path(dir) / p).lexically_normal().string();
-}
-
 double value(const MetHour& h, int v)
 {
     switch (v)
@@ -247,7 +241,7 @@ int monteCarloMain(int argc, char** argv)
         if (thresholds.empty()) throw in.error("thresholds_ug_m3", "a list of concentrations [ug/m3]");
     }
     const std::string dir = fs::path(casePath).parent_path().string();
-    const std::string histPath = resolve(dir, in.text("history"));
+    const std::string histPath = relativeTo(dir, in.text("history"));
     const MetSeries history = readMet(histPath, true);
     if (history.hours.size() < 8760)
     {
