@@ -9,6 +9,13 @@
 namespace procsim
 {
 
+std::string formatNumber(double v, int significant)
+{
+    std::ostringstream os;
+    os << std::setprecision(significant) << v;
+    return os.str();
+}
+
 CsvWriter::CsvWriter(const std::string& path, const std::vector<std::string>& header)
     : path_(path), out_(path + ".tmp")
 {

@@ -9,6 +9,9 @@
 namespace procsim
 {
 
+// v with `significant` digits, as CSV cells and summaries print numbers.
+std::string formatNumber(double v, int significant = 6);
+
 class CsvWriter
 {
 public:

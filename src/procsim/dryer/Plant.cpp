@@ -5,6 +5,7 @@
 #include <iomanip>
 #include <sstream>
 
+#include "common/Csv.hpp"
 #include "common/Cli.hpp"
 #include "common/YamlInput.hpp"
 #include "dryer/Metrics.hpp"
@@ -16,12 +17,7 @@ namespace procsim::dryer
 namespace
 {
 
-std::string fmt(double v)
-{
-    std::ostringstream os;
-    os << std::setprecision(10) << v;
-    return os.str();
-}
+std::string fmt(double v) { return formatNumber(v, 10); }
 
 std::vector<double> positiveList(const YamlInput& in, const std::string& key, std::size_t size,
                                  const std::string& what)

@@ -83,12 +83,7 @@ double kelvin(const YamlInput& item, const std::string& key)
     return t + 273.15;
 }
 
-std::string num(double v)
-{
-    std::ostringstream os;
-    os << std::setprecision(6) << v;
-    return os.str();
-}
+std::string num(double v) { return formatNumber(v); }
 
 } // namespace
 

@@ -66,12 +66,7 @@ struct Residuals
     }
 };
 
-std::string num(double v, int p = 6)
-{
-    std::ostringstream os;
-    os << std::setprecision(p) << v;
-    return os.str();
-}
+std::string num(double v, int p = 6) { return formatNumber(v, p); }
 
 } // namespace
 

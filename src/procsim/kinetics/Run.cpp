@@ -26,12 +26,7 @@ double interpolate(const std::vector<double>& t, const std::vector<double>& v, d
     return v[i - 1] + w * (v[i] - v[i - 1]);
 }
 
-std::string fmt(double v, int prec = 4)
-{
-    std::ostringstream os;
-    os << std::setprecision(prec) << v;
-    return os.str();
-}
+std::string fmt(double v, int prec = 4) { return formatNumber(v, prec); }
 
 } // namespace
 

@@ -17,12 +17,7 @@ namespace
 {
 
 
-std::string num(double v)
-{
-    std::ostringstream os;
-    os << std::setprecision(6) << v;
-    return os.str();
-}
+std::string num(double v) { return formatNumber(v); }
 
 } // namespace
 
