@@ -1,10 +1,6 @@
 #include "dryer/Model.hpp"
 
-#include <cvode/cvode.h>
-#include <nvector/nvector_serial.h>
-#include <sundials/sundials_context.h>
-#include <sunlinsol/sunlinsol_dense.h>
-#include <sunmatrix/sunmatrix_dense.h>
+#include "common/Cvode.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -283,34 +279,10 @@ int cvRoot(sunrealtype, N_Vector y, sunrealtype* g, void* data)
     return 0;
 }
 
-// RAII holder for the SUNDIALS objects.
-struct Cvode
-{
-    SUNContext ctx = nullptr;
-    N_Vector y = nullptr, atol = nullptr;
-    SUNMatrix A = nullptr;
-    SUNLinearSolver LS = nullptr;
-    void* mem = nullptr;
-    ~Cvode()
-    {
-        if (mem) CVodeFree(&mem);
-        if (LS) SUNLinSolFree(LS);
-        if (A) SUNMatDestroy(A);
-        if (y) N_VDestroy(y);
-        if (atol) N_VDestroy(atol);
-        if (ctx) SUNContext_Free(&ctx);
-    }
-};
-
 // CVODE's own messages would add lines to procsim's one-line errors; the
-// failure is reported by check() instead.
+// failure is reported by checkCvode() instead.
 void quietCvode(int, const char*, const char*, char*, void*) {}
 
-void check(int flag, const char* what)
-{
-    if (flag < 0) throw std::runtime_error(std::string("CVODE ") + what + " failed, flag "
-                                           + std::to_string(flag));
-}
 
 TimePoint sample(const Loop& L, double t, const double* y)
 {
@@ -353,8 +325,8 @@ BatchResult simulate(const DryerCase& c, double latentPerKg)
 {
     const Loop L(c);
     const std::size_t n = L.n, N = L.size();
-    Cvode cv;
-    check(SUNContext_Create(nullptr, &cv.ctx), "context");
+    CvodeSession cv;
+    checkCvode(SUNContext_Create(nullptr, &cv.ctx), "context");
     cv.y = N_VNew_Serial(static_cast<sunindextype>(N), cv.ctx);
     cv.atol = N_VNew_Serial(static_cast<sunindextype>(N), cv.ctx);
     double* y = N_VGetArrayPointer(cv.y);
@@ -382,18 +354,18 @@ BatchResult simulate(const DryerCase& c, double latentPerKg)
     const double productWater0 = L.xAverage(y) * c.dryMass;
 
     cv.mem = CVodeCreate(CV_BDF, cv.ctx);
-    check(CVodeInit(cv.mem, cvRhs, 0.0, cv.y), "init");
-    check(CVodeSetErrHandlerFn(cv.mem, quietCvode, nullptr), "error handler");
-    check(CVodeSetUserData(cv.mem, const_cast<Loop*>(&L)), "user data");
-    check(CVodeSVtolerances(cv.mem, c.relTol, cv.atol), "tolerances");
+    checkCvode(CVodeInit(cv.mem, cvRhs, 0.0, cv.y), "init");
+    checkCvode(CVodeSetErrHandlerFn(cv.mem, quietCvode, nullptr), "error handler");
+    checkCvode(CVodeSetUserData(cv.mem, const_cast<Loop*>(&L)), "user data");
+    checkCvode(CVodeSVtolerances(cv.mem, c.relTol, cv.atol), "tolerances");
     cv.A = SUNDenseMatrix(static_cast<sunindextype>(N), static_cast<sunindextype>(N), cv.ctx);
     cv.LS = SUNLinSol_Dense(cv.y, cv.A, cv.ctx);
-    check(CVodeSetLinearSolver(cv.mem, cv.LS, cv.A), "linear solver");
-    check(CVodeSetMaxNumSteps(cv.mem, 100000), "max steps");
-    check(CVodeSetMaxStep(cv.mem, std::min(c.outputInterval, 600.0)), "max step");
-    check(CVodeRootInit(cv.mem, 1, cvRoot), "root init");
+    checkCvode(CVodeSetLinearSolver(cv.mem, cv.LS, cv.A), "linear solver");
+    checkCvode(CVodeSetMaxNumSteps(cv.mem, 100000), "max steps");
+    checkCvode(CVodeSetMaxStep(cv.mem, std::min(c.outputInterval, 600.0)), "max step");
+    checkCvode(CVodeRootInit(cv.mem, 1, cvRoot), "root init");
     int dir = -1;
-    check(CVodeSetRootDirection(cv.mem, &dir), "root direction");
+    checkCvode(CVodeSetRootDirection(cv.mem, &dir), "root direction");
 
     auto record = [&](double t) {
         r.series.push_back(sample(L, t, y));
@@ -409,7 +381,7 @@ BatchResult simulate(const DryerCase& c, double latentPerKg)
         const double tout = std::min(c.maxTime, t + c.outputInterval);
         double tret = t;
         const int flag = CVode(cv.mem, tout, cv.y, &tret, CV_NORMAL);
-        check(flag, "integration");
+        checkCvode(flag, "integration");
         t = tret;
         record(t);
         if (flag == CV_ROOT_RETURN)

@@ -1,3 +1,4 @@
+#include "common/Cvode.hpp"
 #include "kinetics/Solvers.hpp"
 
 #include <cmath>
@@ -5,11 +6,6 @@
 #include <stdexcept>
 #include <unsupported/Eigen/MatrixFunctions>
 
-#include <cvode/cvode.h>
-#include <nvector/nvector_serial.h>
-#include <sundials/sundials_context.h>
-#include <sunlinsol/sunlinsol_dense.h>
-#include <sunmatrix/sunmatrix_dense.h>
 
 namespace procsim::kinetics
 {
@@ -128,49 +124,27 @@ int cvJac(sunrealtype, N_Vector y, N_Vector, SUNMatrix jac, void* data, N_Vector
     return 0;
 }
 
-struct CvodeResources
-{
-    SUNContext ctx = nullptr;
-    N_Vector y = nullptr;
-    SUNMatrix a = nullptr;
-    SUNLinearSolver ls = nullptr;
-    void* mem = nullptr;
-    ~CvodeResources()
-    {
-        if (mem) CVodeFree(&mem);
-        if (ls) SUNLinSolFree(ls);
-        if (a) SUNMatDestroy(a);
-        if (y) N_VDestroy(y);
-        if (ctx) SUNContext_Free(&ctx);
-    }
-};
-
-void check(int flag, const char* what)
-{
-    if (flag < 0) throw std::runtime_error(std::string("CVODE failed in ") + what + " (flag " + std::to_string(flag) + ")");
-}
-
 } // namespace
 
 Trajectory solveCvode(const Model& model, const std::vector<double>& times, double rtol, double atol)
 {
     const auto n = static_cast<sunindextype>(model.size());
-    CvodeResources r;
-    check(SUNContext_Create(nullptr, &r.ctx), "SUNContext_Create");
+    CvodeSession r;
+    checkCvode(SUNContext_Create(nullptr, &r.ctx), "SUNContext_Create");
     r.y = N_VNew_Serial(n, r.ctx);
     const Eigen::VectorXd y0 = model.initialState();
     for (sunindextype i = 0; i < n; ++i) NV_Ith_S(r.y, i) = y0[i];
     r.mem = CVodeCreate(CV_BDF, r.ctx);
     if (!r.mem) throw std::runtime_error("CVodeCreate failed");
-    check(CVodeInit(r.mem, cvRhs, times.front(), r.y), "CVodeInit");
-    check(CVodeSStolerances(r.mem, rtol, atol), "CVodeSStolerances");
-    check(CVodeSetUserData(r.mem, const_cast<Model*>(&model)), "CVodeSetUserData");
-    r.a = SUNDenseMatrix(n, n, r.ctx);
-    r.ls = SUNLinSol_Dense(r.y, r.a, r.ctx);
-    check(CVodeSetLinearSolver(r.mem, r.ls, r.a), "CVodeSetLinearSolver");
-    check(CVodeSetJacFn(r.mem, cvJac), "CVodeSetJacFn");
-    check(CVodeSetMaxNumSteps(r.mem, 1000000), "CVodeSetMaxNumSteps");
-    check(CVodeSetStopTime(r.mem, times.back()), "CVodeSetStopTime");
+    checkCvode(CVodeInit(r.mem, cvRhs, times.front(), r.y), "CVodeInit");
+    checkCvode(CVodeSStolerances(r.mem, rtol, atol), "CVodeSStolerances");
+    checkCvode(CVodeSetUserData(r.mem, const_cast<Model*>(&model)), "CVodeSetUserData");
+    r.A = SUNDenseMatrix(n, n, r.ctx);
+    r.LS = SUNLinSol_Dense(r.y, r.A, r.ctx);
+    checkCvode(CVodeSetLinearSolver(r.mem, r.LS, r.A), "CVodeSetLinearSolver");
+    checkCvode(CVodeSetJacFn(r.mem, cvJac), "CVodeSetJacFn");
+    checkCvode(CVodeSetMaxNumSteps(r.mem, 1000000), "CVodeSetMaxNumSteps");
+    checkCvode(CVodeSetStopTime(r.mem, times.back()), "CVodeSetStopTime");
 
     Trajectory tr;
     tr.t.push_back(times.front());
@@ -178,7 +152,7 @@ Trajectory solveCvode(const Model& model, const std::vector<double>& times, doub
     for (std::size_t i = 1; i < times.size(); ++i)
     {
         sunrealtype t = 0;
-        check(CVode(r.mem, times[i], r.y, &t, CV_NORMAL), "CVode");
+        checkCvode(CVode(r.mem, times[i], r.y, &t, CV_NORMAL), "CVode");
         Eigen::VectorXd y(n);
         for (sunindextype k = 0; k < n; ++k) y[k] = NV_Ith_S(r.y, k);
         tr.t.push_back(times[i]);
