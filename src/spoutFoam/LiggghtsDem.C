@@ -176,7 +176,7 @@ long LiggghtsDem::step() const
 }
 
 
-void LiggghtsDem::gather(std::vector<Particle>& particles) const
+void LiggghtsDem::gather(std::vector<Particle>& particles)
 {
     const auto* atom = lmp_->atom;
     const int nLocal = atom->nlocal;
@@ -225,9 +225,9 @@ void LiggghtsDem::gather(std::vector<Particle>& particles) const
         [](const Particle& a, const Particle& b) { return a.id < b.id; }
     );
 
-    auto& ids = const_cast<std::vector<long>&>(gatheredIds_);
-    ids.resize(n);
-    for (std::size_t i = 0; i < n; ++i) ids[i] = particles[i].id;
+    // remembered so setFluidForces() can find each local atom's force
+    gatheredIds_.resize(n);
+    for (std::size_t i = 0; i < n; ++i) gatheredIds_[i] = particles[i].id;
 }
 
 
