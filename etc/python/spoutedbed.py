@@ -138,3 +138,86 @@ plot "%s" using 1:2:3:4 with circles lc palette fs solid noborder notitle
 ''' % (title, -g.W / 2000, g.W / 2000, g.H / 1000, -vmax, vmax, arrows, data),
             size=(600, int(height)))
     os.remove(data)
+
+
+# A collapsing spout raises the pressure drop by much more than the scatter
+# of 1.8-s averages while the bed spouts (about 5 % between steps).
+COLLAPSE_RISE = 0.10
+
+
+def minimum_spouting(down, rise=COLLAPSE_RISE):
+    """u_ms on the decreasing branch, as section 4.1 defines it: the velocity
+    at which a slight further cut collapses the spout and the pressure drop
+    increases significantly.  down: (u_s, dP) in decreasing u_s.  Returns
+    (u_ms, dP_ms, relative rise of dP at the next cut) at the largest rise
+    of dP between consecutive steps, or None if no rise reaches `rise`."""
+    best = None
+    for (u, dp), (_, dp_next) in zip(down, down[1:]):
+        jump = dp_next / dp - 1
+        if best is None or jump > best[2]:
+            best = (u, dp, jump)
+    return best if best is not None and best[2] >= rise else None
+
+
+def spout_reforms(up, fall=COLLAPSE_RISE):
+    """On the increasing branch, the velocity at which the pressure drop
+    falls most (the spout breaks through again): (u, dP there, relative
+    fall from the step before), or None if no fall reaches `fall`."""
+    best = None
+    for (_, dp_prev), (u, dp) in zip(up, up[1:]):
+        drop = 1 - dp / dp_prev
+        if best is None or drop > best[2]:
+            best = (u, dp, drop)
+    return best if best is not None and best[2] >= fall else None
+
+
+def slope(xs, ys):
+    """Least-squares slope of ys against xs."""
+    n = len(xs)
+    mx, my = sum(xs) / n, sum(ys) / n
+    sxx = sum((x - mx) ** 2 for x in xs)
+    return sum((x - mx) * (y - my) for x, y in zip(xs, ys)) / sxx if sxx > 0 else 0.0
+
+
+def profile_features(spout, downcomer, split=12.0):
+    """The features of the paper's Figs 4a and 5 in time-averaged profiles.
+    spout, downcomer: rows (z/R_d, y/R_d, velocity) as evaluate writes them
+    (downcomer velocity positive downwards).  Returns a list of
+    (feature, value in the lower region, value in the upper region, holds)."""
+    def by_height(rows, pick):
+        heights = sorted({r[0] for r in rows})
+        out = []
+        for h in heights:
+            cells = [r for r in rows if r[0] == h and not math.isnan(r[2])]
+            if cells:
+                out.append((h, pick(cells)))
+        return out
+
+    def mean(cells):
+        return sum(c[2] for c in cells) / len(cells)
+
+    def next_to_plate(cells):
+        return mean([c for c in cells if abs(c[1]) == min(abs(d[1]) for d in cells)])
+
+    def next_to_wall(cells):
+        return mean([c for c in cells if abs(c[1]) == max(abs(d[1]) for d in cells)])
+
+    def low_high(series):
+        low = [v for h, v in series if h < split]
+        high = [v for h, v in series if h >= split]
+        return (sum(low) / len(low) if low else float('nan'),
+                sum(high) / len(high) if high else float('nan'))
+
+    features = []
+    for name, rows, pick, falls in (
+            ('spout velocity falls with height', spout, mean, True),
+            ('downcomer velocity higher in the lower region', downcomer, mean, True),
+            ('downcomer velocity next to the plates falls with height', downcomer,
+             next_to_plate, True),
+            ('downcomer velocity next to the walls rises with height', downcomer,
+             next_to_wall, False)):
+        series = by_height(rows, pick)
+        lo, hi = low_high(series)
+        s = slope([h for h, _ in series], [v for _, v in series]) if len(series) > 1 else 0.0
+        features.append((name, lo, hi, (s < 0) == falls and (lo > hi) == falls))
+    return features
