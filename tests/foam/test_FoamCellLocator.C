@@ -258,4 +258,84 @@ TEST_F(FoamMesh, DividedVoidFractionConservesSolidVolume)
     EXPECT_NEAR(s1/wall.volume(), 1.0, 1e-12);
 }
 
+
+// An L-shaped domain (two blocks; the square x, z in [1, 2] is missing),
+// like the gas mesh around the draft plates and the base's staircase:
+// points in the missing square belong to no cell, whatever the hint.
+class LShapedMesh : public ::testing::Test
+{
+protected:
+    static void SetUpTestSuite()
+    {
+        dir_ = fs::absolute("lShapedCase");
+        fs::remove_all(dir_);
+        writeCase(dir_);                  // dictionaries; blockMeshDict replaced
+        std::ofstream bm(dir_/"system"/"blockMeshDict");
+        bm << "FoamFile { version 2.0; format ascii; class dictionary;"
+              " object blockMeshDict; }\nscale 1;\nvertices (\n"
+              "(0 0 0) (1 0 0) (2 0 0) (0 1 0) (1 1 0) (2 1 0)\n"
+              "(0 0 1) (1 0 1) (2 0 1) (0 1 1) (1 1 1) (2 1 1)\n"
+              "(0 0 2) (1 0 2) (0 1 2) (1 1 2)\n);\n"
+              "blocks ( hex (0 1 4 3 6 7 10 9) (4 1 4) simpleGrading (1 1 1)\n"
+              "         hex (1 2 5 4 7 8 11 10) (4 1 4) simpleGrading (1 1 1)\n"
+              "         hex (6 7 10 9 12 13 15 14) (4 1 4) simpleGrading (1 1 1) );\n"
+              "defaultPatch { name walls; type wall; }\nboundary ( );\n";
+        bm.close();
+        const std::string cmd =
+            "cd '" + dir_.string() + "' && blockMesh > log.blockMesh 2>&1";
+        ASSERT_EQ(std::system(cmd.c_str()), 0) << "blockMesh failed";
+        time_.reset(new Foam::Time(Foam::Time::controlDictName,
+            Foam::fileName(dir_.parent_path().string()),
+            Foam::fileName(dir_.filename().string())));
+        mesh_.reset(new Foam::fvMesh(Foam::IOobject(Foam::fvMesh::defaultRegion,
+            time_->timeName(), *time_, Foam::IOobject::MUST_READ)));
+    }
+
+    static void TearDownTestSuite()
+    {
+        mesh_.reset();
+        time_.reset();
+    }
+
+    static fs::path dir_;
+    static std::unique_ptr<Foam::Time> time_;
+    static std::unique_ptr<Foam::fvMesh> mesh_;
+};
+
+fs::path LShapedMesh::dir_;
+std::unique_ptr<Foam::Time> LShapedMesh::time_;
+std::unique_ptr<Foam::fvMesh> LShapedMesh::mesh_;
+
+
+TEST_F(LShapedMesh, PointsInTheMissingSquareAreOutsideAndOthersInTheirCell)
+{
+    ASSERT_EQ(mesh_->nCells(), 48);
+    const spoutlab::FoamCellLocator locator(*mesh_);
+    const Foam::volVectorField& C = mesh_->C();
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    int inHole = 0;
+    for (int n = 0; n < 4000; ++n)
+    {
+        const spoutlab::Vec3 p{2*u(rng), u(rng), 2*u(rng)};
+        const bool hole = p.x > 1 && p.z > 1;
+        // hints: none, the corner cells next to the missing square, far
+        for (const spoutlab::label hint : {-1, 0, 47, 20})
+        {
+            const spoutlab::label cell = locator.findCell(p, hint);
+            if (hole)
+            {
+                EXPECT_EQ(cell, -1) << p.x << ' ' << p.z << " hint " << hint;
+                continue;
+            }
+            ASSERT_GE(cell, 0) << p.x << ' ' << p.z;
+            // cells are 0.25 x 1 x 0.25
+            EXPECT_LE(std::abs(p.x - C[cell].x()), 0.125 + 1e-12);
+            EXPECT_LE(std::abs(p.z - C[cell].z()), 0.125 + 1e-12);
+        }
+        inHole += hole;
+    }
+    EXPECT_GT(inHole, 500);           // the hole was really probed
+}
+
 } // namespace
