@@ -140,35 +140,34 @@ plot "%s" using 1:2:3:4 with circles lc palette fs solid noborder notitle
     os.remove(data)
 
 
-# A collapsing spout raises the pressure drop by much more than the scatter
-# of 1.8-s averages while the bed spouts (about 5 % between steps).
-COLLAPSE_RISE = 0.10
+# The spout has collapsed when the upward solid flux on its axis (time-
+# averaged over a step) falls below this fraction of the flux at the first
+# step of the decreasing branch: a collapsed spout's mean flux scatters
+# around zero, a working one's stays well above it.
+SPOUT_STOPPED = 0.1
 
 
-def minimum_spouting(down, rise=COLLAPSE_RISE):
+def minimum_spouting(down, stopped=SPOUT_STOPPED):
     """u_ms on the decreasing branch, as section 4.1 defines it: the velocity
-    at which a slight further cut collapses the spout and the pressure drop
-    increases significantly.  down: (u_s, dP) in decreasing u_s.  Returns
-    (u_ms, dP_ms, relative rise of dP at the next cut) at the largest rise
-    of dP between consecutive steps, or None if no rise reaches `rise`."""
-    best = None
-    for (u, dp), (_, dp_next) in zip(down, down[1:]):
-        jump = dp_next / dp - 1
-        if best is None or jump > best[2]:
-            best = (u, dp, jump)
-    return best if best is not None and best[2] >= rise else None
+    at which a slight further cut collapses the spout.  down: (u_s, dP,
+    upward solid flux on the spout axis) in decreasing u_s.  Returns
+    (u_ms, dP_ms, dP after the collapse), or None if the spout never
+    collapsed."""
+    reference = down[0][2] if down else 0.0
+    for (u, dp, _), (_, dp_next, flux_next) in zip(down, down[1:]):
+        if flux_next < stopped * reference:
+            return u, dp, dp_next
+    return None
 
 
-def spout_reforms(up, fall=COLLAPSE_RISE):
-    """On the increasing branch, the velocity at which the pressure drop
-    falls most (the spout breaks through again): (u, dP there, relative
-    fall from the step before), or None if no fall reaches `fall`."""
-    best = None
-    for (_, dp_prev), (u, dp) in zip(up, up[1:]):
-        drop = 1 - dp / dp_prev
-        if best is None or drop > best[2]:
-            best = (u, dp, drop)
-    return best if best is not None and best[2] >= fall else None
+def spout_reforms(up, reference, stopped=SPOUT_STOPPED):
+    """On the increasing branch (which starts collapsed), the first velocity
+    at which the spout carries particles again: (u, dP) or None.  reference:
+    the flux at the first step of the decreasing branch."""
+    for u, dp, flux in up:
+        if flux >= stopped * reference:
+            return u, dp
+    return None
 
 
 def slope(xs, ys):

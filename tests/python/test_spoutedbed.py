@@ -9,34 +9,30 @@ import spoutedbed  # noqa: E402
 
 
 class MinimumSpouting(unittest.TestCase):
-    def test_jump_marks_the_last_spouting_velocity(self):
-        # spouting plateau rising slowly, collapse between 1.2 and 1.1,
-        # then a packed bed whose dP falls with u
-        down = [(1.5, 1000), (1.4, 1040), (1.3, 1070), (1.2, 1100), (1.1, 1500), (1.0, 1380)]
-        self.assertEqual(spoutedbed.minimum_spouting(down), (1.2, 1100, 1500 / 1100 - 1))
+    # (u_s, dP, upward solid flux on the spout axis)
+    down = [(1.5, 1000, 0.050), (1.4, 1040, 0.060), (1.3, 1070, 0.030), (1.2, 1100, 0.006),
+            (1.1, 1500, -0.004), (1.0, 1380, 0.003)]
 
-    def test_scatter_below_the_threshold_is_no_collapse(self):
-        down = [(1.5, 1000), (1.4, 1080), (1.3, 1050), (1.2, 1120)]
-        self.assertIsNone(spoutedbed.minimum_spouting(down))
+    def test_collapse_is_the_first_step_whose_flux_falls_below_the_threshold(self):
+        # 10 % of the first step's 0.05 m/s: 0.006 still spouts, -0.004 does not
+        self.assertEqual(spoutedbed.minimum_spouting(self.down), (1.2, 1100, 1500))
 
-    def test_threshold_is_inclusive_and_adjustable(self):
-        down = [(1.3, 1000), (1.2, 1100)]
-        self.assertIsNotNone(spoutedbed.minimum_spouting(down, rise=0.1 - 1e-12))
-        self.assertIsNone(spoutedbed.minimum_spouting(down, rise=0.2))
+    def test_threshold_is_a_fraction_of_the_first_flux(self):
+        self.assertEqual(spoutedbed.minimum_spouting(self.down, stopped=0.5)[0], 1.3)
 
-    def test_single_step_has_no_jump(self):
-        self.assertIsNone(spoutedbed.minimum_spouting([(1.3, 1000)]))
+    def test_a_spout_that_never_stops_has_no_u_ms(self):
+        self.assertIsNone(spoutedbed.minimum_spouting(self.down[:4]))
+        self.assertIsNone(spoutedbed.minimum_spouting(self.down[:1]))
 
 
 class SpoutReforms(unittest.TestCase):
-    def test_largest_fall_on_the_way_up(self):
-        up = [(0.9, 1500), (1.0, 1560), (1.1, 1600), (1.2, 1100), (1.3, 1080)]
-        u, dp, fall = spoutedbed.spout_reforms(up)
-        self.assertEqual((u, dp), (1.2, 1100))
-        self.assertAlmostEqual(fall, 500 / 1600)
+    def test_first_step_carrying_particles_again(self):
+        up = [(0.9, 1500, -0.01), (1.0, 1560, 0.002), (1.1, 1600, 0.02), (1.2, 1100, 0.04)]
+        self.assertEqual(spoutedbed.spout_reforms(up, reference=0.05), (1.1, 1600))
 
-    def test_rising_curve_never_reforms(self):
-        self.assertIsNone(spoutedbed.spout_reforms([(0.9, 1500), (1.0, 1560), (1.1, 1600)]))
+    def test_never_reforms(self):
+        self.assertIsNone(spoutedbed.spout_reforms([(0.9, 1500, 0.0), (1.0, 1560, 0.001)],
+                                                   reference=0.05))
 
 
 class ProfileFeatures(unittest.TestCase):
