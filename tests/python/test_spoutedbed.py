@@ -15,13 +15,15 @@ class MinimumSpouting(unittest.TestCase):
 
     def test_collapse_is_the_first_step_whose_flux_falls_below_the_threshold(self):
         # 10 % of the first step's 0.05 m/s: 0.006 still spouts, -0.004 does not
-        self.assertEqual(spoutedbed.minimum_spouting(self.down), (1.2, 1100, 1500))
+        self.assertEqual(spoutedbed.minimum_spouting(self.down, stopped=0.1), (1.2, 1100, 1500))
+        # the default, 25 %: 0.006 m/s no longer counts as a spout
+        self.assertEqual(spoutedbed.minimum_spouting(self.down), (1.3, 1070, 1100))
 
     def test_threshold_is_a_fraction_of_the_first_flux(self):
         self.assertEqual(spoutedbed.minimum_spouting(self.down, stopped=0.5)[0], 1.3)
 
     def test_a_spout_that_never_stops_has_no_u_ms(self):
-        self.assertIsNone(spoutedbed.minimum_spouting(self.down[:4]))
+        self.assertIsNone(spoutedbed.minimum_spouting(self.down[:4], stopped=0.1))
         self.assertIsNone(spoutedbed.minimum_spouting(self.down[:1]))
 
 
