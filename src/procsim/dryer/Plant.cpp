@@ -137,6 +137,42 @@ Venting readVenting(const YamlInput& v)
     return out;
 }
 
+// The parameter named under 'parameter', checked against the plant.
+std::string knownParameter(const Plant& p, const YamlInput& f)
+{
+    const std::string name = f.text("parameter");
+    try
+    {
+        p.get(name);
+    }
+    catch (const std::invalid_argument&)
+    {
+        std::string list;
+        for (const auto& n : Plant::parameterNames()) list += (list.empty() ? "" : ", ") + n;
+        throw f.error("parameter", "one of " + list);
+    }
+    return name;
+}
+
+void readProfile(const YamlInput& pr, Plant& p)
+{
+    pr.rejectUnknown({"hold", "time_tolerance_percent", "electricity_tolerance_percent"});
+    for (const YamlInput& h : pr.child("hold").items())
+    {
+        h.rejectUnknown({"parameter", "values"});
+        ProfileAxis axis;
+        axis.name = knownParameter(p, h);
+        axis.values = h.numbers("values");
+        if (axis.values.empty()) throw h.error("values", "a non-empty list of values");
+        for (const auto& other : p.profile)
+            if (other.name == axis.name) throw h.error("parameter", "each parameter held once");
+        p.profile.push_back(axis);
+    }
+    if (p.profile.empty()) throw pr.error("hold", "a non-empty list of {parameter, values}");
+    p.timeTolerance = pr.positive("time_tolerance_percent", "%") / 100;
+    p.electricityTolerance = pr.positive("electricity_tolerance_percent", "%") / 100;
+}
+
 } // namespace
 
 std::vector<std::string> Plant::parameterNames()
@@ -316,22 +352,12 @@ Plant readPlant(const std::string& path)
     if (in.has("calibration"))
     {
         const YamlInput c = in.child("calibration");
-        c.rejectUnknown({"fit", "calibrate_on", "predict", "predict_venting"});
+        c.rejectUnknown({"fit", "calibrate_on", "predict", "predict_venting", "profile"});
         for (const YamlInput& f : c.child("fit").items())
         {
             f.rejectUnknown({"parameter", "lower", "upper"});
             FitParameter fp;
-            fp.name = f.text("parameter");
-            try
-            {
-                p.get(fp.name);
-            }
-            catch (const std::invalid_argument&)
-            {
-                std::string list;
-                for (const auto& n : Plant::parameterNames()) list += (list.empty() ? "" : ", ") + n;
-                throw f.error("parameter", "one of " + list);
-            }
+            fp.name = knownParameter(p, f);
             fp.lower = f.number("lower");
             fp.upper = f.number("upper");
             if (!(fp.lower < fp.upper)) throw f.error("upper", "a value above 'lower'");
@@ -346,6 +372,7 @@ Plant readPlant(const std::string& path)
             throw c.error("predict_venting", "the name of an arrangement under 'venting'");
         for (const auto& id : p.calibrateOn) p.batch(id);
         for (const auto& id : p.predict) p.batch(id);
+        if (c.has("profile")) readProfile(c.child("profile"), p);
     }
     if (in.has("whatif"))
     {

@@ -37,6 +37,14 @@ struct FitParameter
     double lower = 0, upper = 0;
 };
 
+// One direction along which batches 1-3 cannot tell parameter sets apart:
+// the parameter is held at each value in turn while the rest are refitted.
+struct ProfileAxis
+{
+    std::string name;   // see Plant::parameterNames()
+    std::vector<double> values;
+};
+
 struct Plant
 {
     std::string file;
@@ -47,6 +55,10 @@ struct Plant
     std::vector<FitParameter> fit;
     std::vector<std::string> calibrateOn, predict;
     std::string predictVenting;          // venting used for the predicted batches
+    // profile: grid over the held parameters; a refit counts as fitting the
+    // calibration batches if every relative error is within the tolerances
+    std::vector<ProfileAxis> profile;
+    double timeTolerance = 0, electricityTolerance = 0;   // relative
     // what-if
     std::string whatifBatch;
     std::string whatifVenting;
