@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <iomanip>
 #include <iostream>
 #include <map>
@@ -145,6 +146,10 @@ const char* kPlantHelp =
     "         vented_fraction_all (one value shared by every venting arrangement),\n"
     "         venting.<name>.vented_fraction, venting.<name>.vent_short_circuit_fraction\n"
     "    calibrate_on: batch ids; predict: batch ids; predict_venting: a venting name\n"
+    "    profile: (optional)\n"
+    "      hold: list of {parameter (as in fit), values: [..]}: grid, last one fastest\n"
+    "      time_tolerance_percent, electricity_tolerance_percent: a refit fits the\n"
+    "                                   calibration batches if every error is within\n"
     "  whatif: (optional)\n"
     "    batch, venting, hot_air_temperatures_C: [..], vented_fractions: [..]\n";
 
@@ -172,14 +177,26 @@ std::string calibrateHelp()
 {
     return std::string(
                "usage: procsim dryer calibrate PLANT.yaml [--out DIR] [--max-iterations N]\n"
+               "                                          [--profile on|off]\n"
                "\n"
                "Fits calibration.fit on the batches calibration.calibrate_on (least squares\n"
                "on the relative errors of drying time and electricity, Ceres), then runs\n"
                "calibration.predict with their own venting changed to\n"
-               "calibration.predict_venting. Writes DIR/calibration.csv (measured vs\n"
-               "model: time, electricity, E, eta), DIR/calibration.png and\n"
-               "DIR/calibrated.yaml (the plant file with the fitted values).\n"
-               "--max-iterations N caps the Levenberg-Marquardt iterations (default 50).\n"
+               "calibration.predict_venting.\n"
+               "\n"
+               "With calibration.profile, it then holds the listed parameters on every\n"
+               "point of their grid, refits the other fit parameters on the same batches,\n"
+               "keeps the refits whose every time and electricity error is within the\n"
+               "tolerances (the batches' scatter) and predicts with each: the band of\n"
+               "predictions over the parameter sets those batches cannot tell apart.\n"
+               "\n"
+               "Writes DIR/calibration.csv (per batch: time, electricity, E, eta measured,\n"
+               "central fit, band min/max, whether the measurement lies in the band),\n"
+               "DIR/calibration.png, DIR/profile.csv (every grid point: held and refitted\n"
+               "values, errors, accepted, predictions) and DIR/calibrated.yaml (the plant\n"
+               "file with the central fit).\n"
+               "--max-iterations N caps the Levenberg-Marquardt iterations per fit (default 50).\n"
+               "--profile off skips the profile (default on when the plant file has one).\n"
                "\n")
            + kPlantHelp;
 }
@@ -536,6 +553,178 @@ int runSimulate(int argc, char** argv)
 }
 
 // ---------------------------------------------------------------- calibrate
+// The four quantities the paper reports per batch, from a model run and
+// from the batch record (E and eta with the measured electricity and the
+// water dry mass x (X1 - X2), eta with the model's latent-heat convention).
+struct Quantity
+{
+    std::string name, unit, csvUnit;
+    std::function<double(const BatchResult&)> model;
+    std::function<double(const BatchSpec&, double latent)> measured;
+    std::function<std::string(double)> show;
+};
+
+std::vector<Quantity> quantities()
+{
+    auto water = [](const BatchSpec& b) { return b.dryMass * (b.x0 - b.xTarget); };
+    auto q = [](const BatchSpec& b) {
+        return b.measuredElectricity ? *b.measuredElectricity : std::nan("");
+    };
+    return {
+        {"time", "h:min", "h", [](const BatchResult& r) { return r.dryingTime / 3600; },
+         [](const BatchSpec& b, double) { return b.measuredTime ? *b.measuredTime / 3600 : std::nan(""); },
+         [](double h) { return std::isnan(h) ? std::string("-") : hm(h * 3600); }},
+        {"electricity", "kWh", "kWh", [](const BatchResult& r) { return r.electricityJ / 3.6e6; },
+         [q](const BatchSpec& b, double) { return q(b) / 3.6e6; },
+         [](double v) { return num(v, 0); }},
+        {"E", "kJ/kg", "kJ_per_kg", [](const BatchResult& r) { return r.specificEnergy / 1e3; },
+         [q, water](const BatchSpec& b, double) { return q(b) / water(b) / 1e3; },
+         [](double v) { return num(v, 0); }},
+        {"eta", "%", "percent", [](const BatchResult& r) { return r.eta * 100; },
+         [q, water](const BatchSpec& b, double L) { return water(b) * L / q(b) * 100; },
+         [](double v) { return num(v, 1); }},
+    };
+}
+
+void printFit(const Plant& plant, const CalibrationResult& cr)
+{
+    std::cout << "calibration on batches";
+    for (const auto& id : plant.calibrateOn) std::cout << " " << id;
+    std::cout << ": " << cr.report << "\n";
+    for (std::size_t i = 0; i < plant.fit.size(); ++i)
+        std::cout << "  " << std::left << std::setw(46) << plant.fit[i].name << std::right
+                  << " start " << std::setw(10) << num(cr.start[i], 4) << "  fitted "
+                  << std::setw(10) << num(cr.fitted[i], 4) << "\n";
+}
+
+// profile.csv: one row per grid point, the held and refitted values, the
+// errors on the calibration batches and the predictions.
+void writeProfileCsv(const std::string& path, const Plant& plant,
+                     const std::vector<ProfilePoint>& points)
+{
+    std::vector<std::string> head;
+    for (const auto& a : plant.profile) head.push_back("held:" + a.name);
+    std::vector<std::string> refit;
+    for (const auto& pt : points)
+        if (!pt.failed && refit.empty()) refit = pt.refitNames;
+    for (const auto& n : refit) head.push_back("refitted:" + n);
+    for (const auto& n : {"cost", "worst_time_error_percent", "worst_electricity_error_percent",
+                          "accepted", "failed"})
+        head.push_back(n);
+    for (const auto& id : plant.calibrateOn)
+        for (const auto& n : {"time_error_percent_", "electricity_error_percent_"})
+            head.push_back(n + id);
+    const auto qs = quantities();
+    for (const auto& id : plant.predict)
+        for (const auto& q : qs) head.push_back(q.name + "_" + q.csvUnit + "_" + id);
+    CsvWriter csv(path, head);
+    for (const auto& pt : points)
+    {
+        std::vector<double> row(pt.held);
+        for (std::size_t i = 0; i < refit.size(); ++i)
+            row.push_back(pt.failed ? std::nan("") : pt.refitted[i]);
+        row.insert(row.end(), {pt.cost, pt.worstTimeError * 100, pt.worstElectricityError * 100,
+                               pt.accepted ? 1.0 : 0.0, pt.failed ? 1.0 : 0.0});
+        for (std::size_t i = 0; i < plant.calibrateOn.size(); ++i)
+        {
+            row.push_back(pt.failed ? std::nan("") : pt.fitted[i].timeError * 100);
+            row.push_back(pt.failed ? std::nan("") : pt.fitted[i].electricityError * 100);
+        }
+        for (std::size_t i = 0; i < plant.predict.size(); ++i)
+            for (const auto& q : qs)
+                row.push_back(pt.failed ? std::nan("") : q.model(pt.predicted[i].result));
+        csv.row(row);
+    }
+    csv.close();
+}
+
+void printProfilePoint(const Plant& plant, const ProfilePoint& pt)
+{
+    for (std::size_t a = 0; a < pt.held.size(); ++a)
+        std::cout << "  " << plant.profile[a].name << " = " << num(pt.held[a], 4);
+    if (pt.failed)
+    {
+        std::cout << "  -> a run did not integrate\n";
+        return;
+    }
+    std::cout << "  -> worst error time " << num(pt.worstTimeError * 100, 1) << " %, electricity "
+              << num(pt.worstElectricityError * 100, 1) << " %"
+              << (pt.accepted ? "  fits" : "  rejected");
+    for (const auto& c : pt.predicted)
+        std::cout << "  | " << c.id << ": " << hm(c.result.dryingTime)
+                  << (c.result.reachedTarget ? "" : "+") << " h "
+                  << num(c.result.electricityJ / 3.6e6, 0) << " kWh";
+    std::cout << std::endl;   // a profile takes minutes: show each point as it ends
+}
+
+// The calibrate-then-predict table: per batch and quantity, measured,
+// central fit and the band over the profile fits that reproduce the
+// calibration batches; written to calibration.csv and printed.
+void reportCalibration(const std::string& path, const Plant& plant,
+                       const std::vector<ProfilePoint>& points)
+{
+    const auto qs = quantities();
+    std::vector<std::string> head{"batch", "role", "venting"};
+    for (const auto& q : qs)
+        for (const auto& n : {"measured", "central", "band_min", "band_max", "measured_in_band"})
+            head.push_back(q.name + "_" + n + (std::string(n) == "measured_in_band" ? "" : "_" + q.csvUnit));
+    head.push_back("band_members");
+    CsvWriter csv(path, head);
+    std::cout << "\n" << std::left << std::setw(7) << "batch" << std::setw(11) << "role"
+              << std::setw(13) << "quantity" << std::right << std::setw(10) << "measured"
+              << std::setw(10) << "central" << std::setw(22) << "band (profile fits)"
+              << "  measured in band\n";
+    auto one = [&](const std::string& id, const std::string& role, const std::string& vent) {
+        const BatchSpec& b = plant.batch(id);
+        const BatchResult r = simulate(plant.caseFor(b, vent));
+        std::vector<std::string> row{id, role, vent};
+        int members = 0;
+        for (const auto& q : qs)
+        {
+            const double m = q.measured(b, r.latentPerKg), c = q.model(r);
+            const Band bd = band(points, id, q.model);
+            members = bd.members;
+            const std::string in = bd.members == 0 || std::isnan(m) ? "-" : bd.contains(m) ? "yes" : "no";
+            row.insert(row.end(), {num(m, 4), num(c, 4), bd.members ? num(bd.lo, 4) : "nan",
+                                   bd.members ? num(bd.hi, 4) : "nan", in == "yes" ? "1" : in == "no" ? "0" : "nan"});
+            std::cout << std::left << std::setw(7) << id << std::setw(11) << role << std::setw(13)
+                      << (q.name + " " + q.unit) << std::right << std::setw(10) << q.show(m)
+                      << std::setw(10) << (q.show(c) + (r.reachedTarget || q.name != "time" ? "" : "+"))
+                      << std::setw(22)
+                      << (bd.members ? q.show(bd.lo) + " .. " + q.show(bd.hi) : std::string("-"))
+                      << "  " << in << "\n";
+        }
+        row.push_back(std::to_string(members));
+        csv.row(row);
+    };
+    for (const auto& id : plant.calibrateOn) one(id, "fitted", plant.batch(id).venting);
+    for (const auto& id : plant.predict) one(id, "predicted", plant.predictVenting);
+    csv.close();
+}
+
+// calibration.png: one panel per quantity; measured points, the central
+// fit and the profile band as an interval.
+void plotCalibration(const std::string& png, const std::string& csv)
+{
+    std::string script =
+        "set termoption noenhanced\nset datafile separator ','\n"
+        "set multiplot layout 2,2 title 'fitted on the old-dryer batches, predicted with the "
+        "modified venting: measured, central fit, band of fits within the scatter'\n"
+        "set key outside bottom center horizontal\nset grid\nset offsets 0.5, 0.5, 0, 0\n"
+        "set xlabel 'batch'\n";
+    const char* labels[] = {"drying time [h]", "electricity [kWh]", "E [kJ/kg water]", "eta [%]"};
+    for (int k = 0; k < 4; ++k)
+    {
+        const int c = 4 + 5 * k;   // measured, central, band min, band max
+        const auto col = [&](int i) { return std::to_string(c + i); };
+        script += std::string("set ylabel '") + labels[k] + "'\n" + "plot '" + csv + "' u 0:"
+                  + col(1) + ":" + col(2) + ":" + col(3)
+                  + ":xtic(1) w yerrorbars pt 4 ps 1.5 lw 2 lc rgb '#1f77b4' t 'central, band', "
+                  + "'' u 0:" + col(0) + " w p pt 7 ps 1.5 lc rgb 'black' t 'measured'\n";
+    }
+    plotPng(png, script + "unset multiplot\n", 1200, 900);
+}
+
 int runCalibrate(int argc, char** argv)
 {
     if (wantsHelp(argc, argv))
@@ -543,9 +732,17 @@ int runCalibrate(int argc, char** argv)
         std::cout << calibrateHelp();
         return 0;
     }
-    const Args a = parse(argc, argv, {"--out", "--max-iterations"});
+    const Args a = parse(argc, argv, {"--out", "--max-iterations", "--profile"});
     if (a.positional.size() != 1)
         throw InputError("dryer calibrate: expected one plant file (see --help)");
+    bool runProfile = true;
+    if (a.options.count("--profile"))
+    {
+        const std::string v = a.options.at("--profile");
+        if (v != "on" && v != "off")
+            throw InputError("dryer calibrate: option '--profile' expected 'on' or 'off', got '" + v + "'");
+        runProfile = v == "on";
+    }
     int maxIterations = 50;
     if (a.options.count("--max-iterations"))
     {
@@ -558,64 +755,23 @@ int runCalibrate(int argc, char** argv)
     if (plant.fit.empty())
         throw InputError(plant.file + ": key 'calibration' is missing (needed by calibrate)");
     const std::string dir = outDir(a);
-    const CalibrationResult cr = calibrate(plant, maxIterations);
-    std::cout << "calibration on batches";
-    for (const auto& id : plant.calibrateOn) std::cout << " " << id;
-    std::cout << ": " << cr.report << "\n";
-    for (std::size_t i = 0; i < plant.fit.size(); ++i)
-        std::cout << "  " << std::left << std::setw(46) << plant.fit[i].name << std::right
-                  << " start " << std::setw(10) << num(cr.start[i], 4) << "  fitted "
-                  << std::setw(10) << num(cr.fitted[i], 4) << "\n";
+    printFit(plant, calibrate(plant, maxIterations));
     writePlant(plant, dir + "/calibrated.yaml",
                "plant file with parameters fitted by 'procsim dryer calibrate'");
-
-    CsvWriter csv(dir + "/calibration.csv",
-                  {"batch", "role", "venting", "time_measured_h", "time_model_h",
-                   "electricity_measured_kWh", "electricity_model_kWh", "E_measured_kJ_per_kg",
-                   "E_model_kJ_per_kg", "eta_measured_percent", "eta_model_percent",
-                   "time_error_percent", "E_error_percent"});
-    std::cout << "\n" << std::left << std::setw(7) << "batch" << std::setw(10) << "role"
-              << std::right << std::setw(16) << "time meas/model" << std::setw(16)
-              << "kWh meas/model" << std::setw(18) << "E meas/model" << std::setw(16)
-              << "eta meas/model" << "\n";
-    auto runOne = [&](const std::string& id, const std::string& role, const std::string& vent) {
-        const BatchSpec& b = plant.batch(id);
-        const DryerCase c = plant.caseFor(b, vent);
-        const BatchResult r = simulate(c);
-        const double water = b.dryMass * (b.x0 - b.xTarget);
-        const double L = r.latentPerKg;
-        const double tm = b.measuredTime ? *b.measuredTime : std::nan("");
-        const double qm = b.measuredElectricity ? *b.measuredElectricity : std::nan("");
-        const double Em = qm / water, etam = water * L / qm;
-        std::cout << std::left << std::setw(7) << id << std::setw(10) << role << std::right
-                  << std::setw(8) << (b.measuredTime ? hm(tm) : "-") << std::setw(8)
-                  << hm(r.dryingTime) << std::setw(8) << num(qm / 3.6e6, 0) << std::setw(8)
-                  << num(r.electricityJ / 3.6e6, 0) << std::setw(9) << num(Em / 1e3, 0)
-                  << std::setw(9) << num(r.specificEnergy / 1e3, 0) << std::setw(8)
-                  << num(etam * 100, 1) << std::setw(8) << num(r.eta * 100, 1) << "\n";
-        csv.row(std::vector<std::string>{
-            id, role, vent, num(tm / 3600, 4), num(r.dryingTime / 3600, 4), num(qm / 3.6e6, 2),
-            num(r.electricityJ / 3.6e6, 2), num(Em / 1e3, 2), num(r.specificEnergy / 1e3, 2),
-            num(etam * 100, 3), num(r.eta * 100, 3), num((r.dryingTime / tm - 1) * 100, 2),
-            num((r.specificEnergy / Em - 1) * 100, 2)});
-    };
-    for (const auto& id : plant.calibrateOn) runOne(id, "fitted", plant.batch(id).venting);
-    for (const auto& id : plant.predict) runOne(id, "predicted", plant.predictVenting);
-    csv.close();
-    const std::string f = dir + "/calibration.csv";
-    plotPng(dir + "/calibration.png",
-            "set termoption noenhanced\nset datafile separator ','\n"
-            "set multiplot layout 1,2 title 'calibrated on "
-            "old-dryer batches, predicted with the modified venting'\n"
-            "set style data histograms\nset style histogram clustered gap 1\n"
-            "set style fill solid 0.7 border -1\nset key top left\nset yrange [0:*]\n"
-            "set ylabel 'drying time [h]'\nset xlabel 'batch (1-3 fitted, 4-5 predicted)'\n"
-            "plot '" + f + "' u 4:xtic(1) t 'measured', '' u 5 t 'model'\n"
-            "set ylabel 'specific energy E [kJ/kg water]'\n"
-            "plot '" + f + "' u 8:xtic(1) t 'measured', '' u 9 t 'model'\n"
-            "unset multiplot\n",
-            1100, 500);
-    std::cout << "\nwrote " << dir << "/calibration.csv, calibration.png, calibrated.yaml\n";
+    std::vector<ProfilePoint> points;
+    if (runProfile && !plant.profile.empty())
+    {
+        std::cout << "\nprofile: hold, refit the rest on the calibration batches (fits: every "
+                     "time error within "
+                  << num(plant.timeTolerance * 100, 1) << " %, electricity within "
+                  << num(plant.electricityTolerance * 100, 1) << " %)\n";
+        points = profile(plant, maxIterations, [&](const ProfilePoint& pt) { printProfilePoint(plant, pt); });
+        writeProfileCsv(dir + "/profile.csv", plant, points);
+    }
+    reportCalibration(dir + "/calibration.csv", plant, points);
+    plotCalibration(dir + "/calibration.png", dir + "/calibration.csv");
+    std::cout << "\nwrote " << dir << "/calibration.csv, calibration.png, calibrated.yaml"
+              << (points.empty() ? "" : ", profile.csv") << "\n";
     return 0;
 }
 
