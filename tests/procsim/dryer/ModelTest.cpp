@@ -109,12 +109,17 @@ TEST(Model, VentingHumidAirHelps)
     EXPECT_LT(newVent.specificEnergy, oldVent.specificEnergy);
 }
 
-// Warm-up of a wet load in the poorly vented old dryer supersaturates the
-// return air; the excess condenses and drains, the balances still close and
-// the relative humidity stays at saturation (within the relaxation).
+// Warm-up of a wet load in a poorly vented dryer with a strong gas film
+// supersaturates the return air; the excess condenses and drains, the
+// balances still close and the relative humidity stays at saturation (within
+// the relaxation).  (With the estimated film of plant.yaml the cold product
+// evaporates too slowly for that, so the film is raised here.)
 TEST(Model, SupersaturatedReturnAirCondenses)
 {
-    const BatchResult r = simulate(batchCase("2"));
+    DryerCase c = batchCase("2");
+    c.hConv = 20;
+    c.ventShortCircuit = 0.64;
+    const BatchResult r = simulate(c);
     EXPECT_GT(r.condensateKg, 0.0);
     double rhMax = 0;
     for (const auto& p : r.series) rhMax = std::max(rhMax, p.rhReturn);
