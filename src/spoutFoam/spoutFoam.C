@@ -70,7 +70,18 @@ int main(int argc, char *argv[])
             }
 
             coupling.checkCourant(phiU);
-            runTime.write();
+            // the last step is always written: the final state, the time
+            // averages up to the end, and a restart point
+            const bool last =
+                runTime.value() > runTime.endTime().value() - 0.5*runTime.deltaTValue();
+            if (last && !runTime.writeTime())
+            {
+                runTime.writeNow();
+            }
+            else
+            {
+                runTime.write();
+            }
             coupling.write();
 
             runTime.printExecutionTime(Info);
