@@ -80,6 +80,38 @@ spoutlab::Vec3 toPoint(double s, double t, double r)
     return {Lx*s + shear*Lz*r, Ly*t, Lz*r};
 }
 
+// Run blockMesh in the case and read its mesh.
+void meshCase
+(
+    const fs::path& dir,
+    std::unique_ptr<Foam::Time>& time,
+    std::unique_ptr<Foam::fvMesh>& mesh
+)
+{
+    const std::string cmd = "cd '" + dir.string() + "' && blockMesh > log.blockMesh 2>&1";
+    ASSERT_EQ(std::system(cmd.c_str()), 0) << "blockMesh failed in " << dir;
+    time.reset
+    (
+        new Foam::Time
+        (
+            Foam::Time::controlDictName,
+            Foam::fileName(dir.parent_path().string()),
+            Foam::fileName(dir.filename().string())
+        )
+    );
+    mesh.reset
+    (
+        new Foam::fvMesh
+        (
+            Foam::IOobject
+            (
+                Foam::fvMesh::defaultRegion, time->timeName(), *time,
+                Foam::IOobject::MUST_READ
+            )
+        )
+    );
+}
+
 class FoamMesh : public ::testing::Test
 {
 protected:
@@ -88,29 +120,7 @@ protected:
         dir_ = fs::absolute("locatorCase");
         fs::remove_all(dir_);
         writeCase(dir_);
-        const std::string cmd =
-            "cd '" + dir_.string() + "' && blockMesh > log.blockMesh 2>&1";
-        ASSERT_EQ(std::system(cmd.c_str()), 0) << "blockMesh failed";
-        time_.reset
-        (
-            new Foam::Time
-            (
-                Foam::Time::controlDictName,
-                Foam::fileName(dir_.parent_path().string()),
-                Foam::fileName(dir_.filename().string())
-            )
-        );
-        mesh_.reset
-        (
-            new Foam::fvMesh
-            (
-                Foam::IOobject
-                (
-                    Foam::fvMesh::defaultRegion, time_->timeName(), *time_,
-                    Foam::IOobject::MUST_READ
-                )
-            )
-        );
+        meshCase(dir_, time_, mesh_);
     }
 
     static void TearDownTestSuite()
@@ -281,14 +291,7 @@ protected:
               "         hex (6 7 10 9 12 13 15 14) (4 1 4) simpleGrading (1 1 1) );\n"
               "defaultPatch { name walls; type wall; }\nboundary ( );\n";
         bm.close();
-        const std::string cmd =
-            "cd '" + dir_.string() + "' && blockMesh > log.blockMesh 2>&1";
-        ASSERT_EQ(std::system(cmd.c_str()), 0) << "blockMesh failed";
-        time_.reset(new Foam::Time(Foam::Time::controlDictName,
-            Foam::fileName(dir_.parent_path().string()),
-            Foam::fileName(dir_.filename().string())));
-        mesh_.reset(new Foam::fvMesh(Foam::IOobject(Foam::fvMesh::defaultRegion,
-            time_->timeName(), *time_, Foam::IOobject::MUST_READ)));
+        meshCase(dir_, time_, mesh_);
     }
 
     static void TearDownTestSuite()
