@@ -171,6 +171,36 @@ def spout_reforms(up, reference, stopped=SPOUT_STOPPED):
     return None
 
 
+def next_velocity(done, start, stop, step, up, confirm=2, stopped=SPOUT_STOPPED):
+    """The minimum-spouting schedule, decided as it goes, the way it is done
+    at the rig: the u_s of the next step after the finished ones, or None when
+    the protocol is complete.  done: (u_s, branch 'down'/'up', spout flux) of
+    the finished steps after the spin-up, oldest first.  Lowering u_s stops
+    at `stop` or once `confirm` successive steps have collapsed (flux below
+    `stopped` x the flux of the first step); with `up`, u_s then rises again
+    until `confirm` successive steps spout or `start` is reached.  Steps
+    beyond that only repeat the confirmed state and cost minutes each."""
+    tol = 1e-6 * step
+    if not done:
+        return round(start - step, 6)
+    reference = done[0][2]
+
+    def streak(branch, collapsed):
+        n = 0
+        for u, b, flux in reversed(done):
+            if b != branch or (flux < stopped * reference) != collapsed:
+                break
+            n += 1
+        return n
+
+    u, branch, _ = done[-1]
+    if branch == 'down' and u - step >= stop - tol and streak('down', True) < confirm:
+        return round(u - step, 6)
+    if not up or u + step > start + tol or (branch == 'up' and streak('up', False) >= confirm):
+        return None
+    return round(u + step, 6)
+
+
 def slope(xs, ys):
     """Least-squares slope of ys against xs."""
     n = len(xs)

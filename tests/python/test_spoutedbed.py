@@ -37,6 +37,52 @@ class SpoutReforms(unittest.TestCase):
                                                    reference=0.05))
 
 
+class NextVelocity(unittest.TestCase):
+    """The adaptive schedule: from 1.5 m/s down by 0.1 to at most 0.8, and back up."""
+
+    def schedule(self, flux_at, up=True, confirm=2):
+        """Run the decision rule against a bed whose spout flux at u_s is
+        flux_at(u_s, branch); returns the velocities of the steps."""
+        done, u, branch = [], 1.5, 'down'
+        while u is not None:
+            done.append((u, branch, flux_at(u, branch)))
+            u_next = spoutedbed.next_velocity(done, start=1.5, stop=0.8, step=0.1, up=up,
+                                              confirm=confirm)
+            if u_next is not None:
+                branch = 'down' if u_next < u and branch == 'down' else 'up'
+            u = u_next
+        return [(u, b) for u, b, _ in done]
+
+    @staticmethod
+    def bed(u, branch):
+        # spouts down to 1.1 m/s, re-forms only at 1.2 on the way up (hysteresis)
+        return 0.05 if u >= (1.1 if branch == 'down' else 1.2) else 0.0
+
+    def test_lowers_until_two_collapsed_steps_then_rises_until_two_spouting_steps(self):
+        self.assertEqual(self.schedule(self.bed),
+                         [(1.5, 'down'), (1.4, 'down'), (1.3, 'down'), (1.2, 'down'),
+                          (1.1, 'down'), (1.0, 'down'), (0.9, 'down'),
+                          (1.0, 'up'), (1.1, 'up'), (1.2, 'up'), (1.3, 'up')])
+
+    def test_a_spout_that_never_collapses_runs_the_whole_range(self):
+        steps = self.schedule(lambda u, b: 0.05)
+        self.assertEqual(steps[7], (0.8, 'down'))
+        self.assertEqual(steps[8:10], [(0.9, 'up'), (1.0, 'up')])
+        self.assertEqual(len(steps), 10)
+
+    def test_without_the_up_branch_it_ends_at_the_confirmed_collapse(self):
+        self.assertEqual(self.schedule(self.bed, up=False)[-1], (0.9, 'down'))
+
+    def test_a_large_confirm_runs_the_full_loop(self):
+        steps = self.schedule(self.bed, confirm=100)
+        self.assertEqual((steps[7], steps[-1], len(steps)), ((0.8, 'down'), (1.5, 'up'), 15))
+
+    def test_the_threshold_is_a_fraction_of_the_first_steps_flux(self):
+        # 0.02 m/s is below 25 % of 0.1 m/s: collapsed from 1.3 on
+        steps = self.schedule(lambda u, b: 0.1 if u > 1.35 else 0.02, up=False)
+        self.assertEqual(steps[-1], (1.2, 'down'))
+
+
 class ProfileFeatures(unittest.TestCase):
     heights = [5.873, 8.637, 11.400, 14.164, 16.927]
 
