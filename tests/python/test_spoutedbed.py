@@ -110,6 +110,26 @@ class ProfileFeatures(unittest.TestCase):
         self.assertEqual([f[3] for f in spoutedbed.profile_features(spout, down)],
                          [False, False, False, False])
 
+    def test_next_to_the_walls_is_read_at_the_walls_not_at_the_slanting_base(self):
+        # the downcomer widens with height up to the wall at 9 (bins to 8.6);
+        # low down the outermost bin lies on the base and is fast, while at
+        # every y near the wall the velocity rises with height
+        def extent(h):
+            return min(8.6, 0.62 * h)
+        down = [(h, y, 0.001 * h + (0.03 if abs(y) < 5 else 0.0), 0.4)
+                for h in self.heights for y in (-8.6, -7, -5, -3, -1.4, 1.4, 3, 5, 7, 8.6)
+                if abs(y) <= extent(h)]
+        wall = spoutedbed.profile_features(self.spout(lambda h, y: 1.0), down)[3]
+        self.assertTrue(wall[3])
+        # |y| >= 6.6 is reached from z/R_d = 11.4 up; lower down it is the base
+        self.assertAlmostEqual(wall[1], 0.001 * 11.4)
+        self.assertAlmostEqual(wall[2], 0.001 * (14.164 + 16.927) / 2)
+
+    def test_a_region_without_cells_decides_nothing(self):
+        down = [r for r in self.downcomer(lambda h, y: 0.01 + 0.001 * h if abs(y) > 8 else 0.02)
+                if r[0] > 12 or abs(r[1]) < 8]
+        self.assertFalse(spoutedbed.profile_features(self.spout(lambda h, y: 1.0), down)[3][3])
+
     def test_nan_cells_are_skipped(self):
         spout = self.spout(lambda h, y: float('nan') if y > 0.5 else 2.0 - 0.1 * h)
         down = self.downcomer(lambda h, y: 0.05 - 0.001 * h)
