@@ -25,6 +25,7 @@ FoamCellLocator::FoamCellLocator(const Foam::fvMesh& mesh)
         planeStart_[c + 1] = planeStart_[c] + cells[c].size();
     }
     planes_.resize(planeStart_.back());
+    faceCell_.resize(planeStart_.back());
     for (Foam::label c = 0; c < mesh.nCells(); ++c)
     {
         std::size_t k = planeStart_[c];
@@ -32,7 +33,10 @@ FoamCellLocator::FoamCellLocator(const Foam::fvMesh& mesh)
         {
             Foam::vector n = mesh.faceAreas()[f];
             n /= Foam::mag(n);
-            if (mesh.faceOwner()[f] != c) n = -n;
+            const bool owner = mesh.faceOwner()[f] == c;
+            if (!owner) n = -n;
+            faceCell_[k] = !mesh.isInternalFace(f) ? -1
+                : (owner ? mesh.faceNeighbour()[f] : mesh.faceOwner()[f]);
             planes_[k++] = Plane{n.x(), n.y(), n.z(), n & mesh.faceCentres()[f]};
         }
     }
@@ -91,16 +95,26 @@ bool FoamCellLocator::inside(const Vec3& p, label cell) const
 }
 
 
-label FoamCellLocator::findCell(const Vec3& p, label hint) const
+label FoamCellLocator::towards(const Vec3& p, label cell) const
 {
-    if (hint >= 0)
+    double furthest = 0;
+    label next = cell;
+    for (std::size_t k = planeStart_[cell]; k < planeStart_[cell + 1]; ++k)
     {
-        if (inside(p, hint)) return hint;
-        for (std::size_t k = cellCells_[hint]; k < cellCells_[hint + 1]; ++k)
+        const Plane& f = planes_[k];
+        const double beyond = f.nx*p.x + f.ny*p.y + f.nz*p.z - f.d;
+        if (beyond > furthest)
         {
-            if (inside(p, neighbours_[k])) return neighbours_[k];
+            furthest = beyond;
+            next = faceCell_[k];
         }
     }
+    return next;
+}
+
+
+label FoamCellLocator::findCell(const Vec3& p, label hint) const
+{
     // sample points of particles cut by a wall often lie outside the whole
     // mesh: no search needed
     if
@@ -110,6 +124,23 @@ label FoamCellLocator::findCell(const Vec3& p, label hint) const
     )
     {
         return -1;
+    }
+    if (hint >= 0)
+    {
+        // the walk ends in the one cell holding p (cells do not overlap),
+        // or gives up at a boundary face (a hole or a non-convex corner of
+        // the mesh may lie between) or after a few steps
+        label cell = hint;
+        for (int step = 0; step < 4 && cell >= 0; ++step)
+        {
+            const label next = towards(p, cell);
+            if (next == cell) return cell;
+            cell = next;
+        }
+        for (std::size_t k = cellCells_[hint]; k < cellCells_[hint + 1]; ++k)
+        {
+            if (inside(p, neighbours_[k])) return neighbours_[k];
+        }
     }
     const Foam::point q(p.x, p.y, p.z);
     const label cell = search_.findCell(q, -1, true);

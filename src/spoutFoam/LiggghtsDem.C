@@ -143,6 +143,14 @@ void LiggghtsDem::findCouplingFixes(const std::string& inputFile)
           + "': expected 'atom_style granular' (spheres with radius and mass)"
         );
     }
+    if (lmp_->atom->map_style == 0)
+    {
+        throw InputError
+        (
+            "LIGGGHTS input '" + inputFile + "': expected 'atom_modify map array' "
+            "before the box is defined (the coupling looks particles up by id)"
+        );
+    }
 }
 
 
@@ -208,22 +216,27 @@ void LiggghtsDem::gather(std::vector<Particle>& particles)
         all.data(), counts.data(), offsets.data(), MPI_DOUBLE, comm_
     );
 
+    // In id order, so each particle keeps its place (and its cell hint)
+    // from step to step whatever order LIGGGHTS keeps its atoms in.  Ids
+    // run from 1 to the number ever inserted, so placing each row by its id
+    // is linear where sorting was not.
     const std::size_t n = all.size()/width;
+    long maxId = 0;
+    for (std::size_t i = 0; i < n; ++i) maxId = std::max(maxId, long(all[i*width]));
+    std::vector<long> row(std::size_t(maxId) + 1, -1);
+    for (std::size_t i = 0; i < n; ++i) row[std::size_t(all[i*width])] = long(i);
     particles.resize(n);
-    for (std::size_t i = 0; i < n; ++i)
+    std::size_t k = 0;
+    for (const long i : row)
     {
-        const double* row = &all[i*width];
-        Particle& p = particles[i];
-        p.id = long(row[0]);
-        p.x = Vec3{row[1], row[2], row[3]};
-        p.v = Vec3{row[4], row[5], row[6]};
-        p.radius = row[7];
+        if (i < 0) continue;
+        const double* r = &all[std::size_t(i)*width];
+        Particle& p = particles[k++];
+        p.id = long(r[0]);
+        p.x = Vec3{r[1], r[2], r[3]};
+        p.v = Vec3{r[4], r[5], r[6]};
+        p.radius = r[7];
     }
-    std::sort
-    (
-        particles.begin(), particles.end(),
-        [](const Particle& a, const Particle& b) { return a.id < b.id; }
-    );
 
     // remembered so setFluidForces() can find each local atom's force
     gatheredIds_.resize(n);
@@ -250,15 +263,15 @@ void LiggghtsDem::setFluidForces(const std::vector<Vec3>& forces)
         comm_
     );
 
-    const auto* atom = lmp_->atom;
+    // the atom map (atom_modify map array, required of coupled inputs)
+    // gives each gathered id's local atom; ids owned by other ranks map to
+    // ghosts or nothing
+    auto* atom = lmp_->atom;
     double** drag = dragForce_->array_atom;
-    for (int i = 0; i < atom->nlocal; ++i)
+    for (std::size_t k = 0; k < gatheredIds_.size(); ++k)
     {
-        const auto it = std::lower_bound
-        (
-            gatheredIds_.begin(), gatheredIds_.end(), long(atom->tag[i])
-        );
-        const std::size_t k = std::size_t(it - gatheredIds_.begin());
+        const int i = atom->map(int(gatheredIds_[k]));
+        if (i < 0 || i >= atom->nlocal) continue;
         for (int d = 0; d < 3; ++d) drag[i][d] = summed[3*k + d];
     }
 }
