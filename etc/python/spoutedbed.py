@@ -249,16 +249,14 @@ def profile_features(spout, downcomer, split=12.0):
     the bins within WALL_BAND of the outermost one of the whole profile, at
     the heights that reach them.  (Low down the outermost bin of a height
     lies on the slanting base, not on the wall.)"""
-    mean = mean_velocity
-
     def next_to_plate(cells):
-        return mean([c for c in cells if abs(c[1]) == min(abs(d[1]) for d in cells)])
+        return mean_velocity([c for c in cells if abs(c[1]) == min(abs(d[1]) for d in cells)])
 
     wall = max((abs(r[1]) for r in downcomer), default=0.0)
 
     def next_to_wall(cells):
         near = [c for c in cells if abs(c[1]) >= wall - WALL_BAND - 1e-9]
-        return mean(near) if near else None
+        return mean_velocity(near) if near else None
 
     def low_high(series):
         low = [v for h, v in series if h < split]
@@ -268,8 +266,8 @@ def profile_features(spout, downcomer, split=12.0):
 
     features = []
     for name, rows, pick, falls in (
-            ('spout velocity falls with height', spout, mean, True),
-            ('downcomer velocity higher in the lower region', downcomer, mean, True),
+            ('spout velocity falls with height', spout, mean_velocity, True),
+            ('downcomer velocity higher in the lower region', downcomer, mean_velocity, True),
             ('downcomer velocity next to the plates falls with height', downcomer,
              next_to_plate, True),
             ('downcomer velocity next to the walls rises with height', downcomer,
