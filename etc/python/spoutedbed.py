@@ -140,6 +140,25 @@ plot "%s" using 1:2:3:4 with circles lc palette fs solid noborder notitle
     os.remove(data)
 
 
+# Kudra et al.'s correlation for u_ms (eq 12 of the draft-plate paper)
+def kudra_ums(g, Hb, u_exp=1.12):
+    """Eq 12 as the paper uses it: Kudra's experimental u_ms (W_d = 50,
+    H_e = 100 mm, H_b = 0.9 m) scaled by the correlation's dependence on
+    W_d (sqrt(g W_d) and (W_d d_p/(W_i H_b))^0.084), H_e^0.15 and H_b^-0.084."""
+    return (u_exp * (g.Wd / 50)**0.5 * (g.He / 100)**0.15 * (g.Wd / 50)**0.084
+            * (0.9 / Hb)**0.084)
+
+
+def kudra_eq12(g, Hb, phi=1.0, rho_g=1.205):
+    """Eq 12 evaluated directly for the simulated geometry and bed height:
+    spheres (phi = 1), air at 20 C, theta in degrees (the paper does not say;
+    degrees reproduce its scaled 1.18 m/s, radians would give 40 % more)."""
+    rho_p, dp = g.particles['rhop'], g.particles['dp'] / 1000
+    Wd, Wi, He, Lb = g.Wd / 1000, g.Wi / 1000, g.He / 1000, g.Lb / 1000
+    return (math.sqrt(9.81 * Wd) * phi**0.68 * g.theta**-0.084
+            * ((rho_p - rho_g) / rho_g * He / Lb)**0.15 * (Wd * dp / (Wi * Hb))**0.084)
+
+
 # The spout has collapsed when the upward solid flux on its axis (time-
 # averaged over a step) falls below this fraction of the flux at the first
 # step of the decreasing branch.  A collapsed bed's 1.8-s mean flux scatters

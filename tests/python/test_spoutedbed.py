@@ -8,6 +8,23 @@ sys.path.insert(0, os.path.join(os.path.dirname(__file__), '..', '..', 'etc', 'p
 import spoutedbed  # noqa: E402
 
 
+class KudraEq12(unittest.TestCase):
+    """Eq 12 for the simulated vessel of Table 1 (the case's dictionary) at
+    the paper's 0.9 m bed: the paper scales Kudra's measured 1.12 m/s to
+    (1.12)(55/50)^0.5(95/100)^0.15(55/50)^0.084 = 1.18 m/s."""
+    g = spoutedbed.load(os.path.join(os.path.dirname(__file__), '..', '..',
+                                     'openfoam_cases', 'spoutDraftPlates'))
+
+    def test_scaled_as_the_paper_does(self):
+        self.assertAlmostEqual(spoutedbed.kudra_ums(self.g, 0.9), 1.18, delta=0.005)
+
+    def test_evaluated_directly_for_spheres_agrees_with_the_scaling(self):
+        self.assertAlmostEqual(spoutedbed.kudra_eq12(self.g, 0.9), 1.18, delta=0.01)
+
+    def test_a_lower_bed_spouts_at_a_higher_velocity(self):
+        self.assertGreater(spoutedbed.kudra_eq12(self.g, 0.8), spoutedbed.kudra_eq12(self.g, 0.9))
+
+
 class MinimumSpouting(unittest.TestCase):
     # (u_s, dP, upward solid flux on the spout axis)
     down = [(1.5, 1000, 0.050), (1.4, 1040, 0.060), (1.3, 1070, 0.030), (1.2, 1100, 0.006),
