@@ -2,6 +2,7 @@
 
 #include "InputError.hpp"
 #include "RanzMarshall.hpp"
+#include "Sartori.hpp"
 
 #include <functional>
 #include <utility>
@@ -23,6 +24,7 @@ std::pair<const char*, HeatTransferFactory> entry(const char* name) {
 const std::vector<std::pair<const char*, HeatTransferFactory>>& heatTransferTable() {
   static const std::vector<std::pair<const char*, HeatTransferFactory>> table = {
       entry<RanzMarshall>("RanzMarshall"),
+      entry<Sartori>("Sartori"),
   };
   return table;
 }

@@ -1,0 +1,15 @@
+#include "Sartori.hpp"
+
+#include <cmath>
+
+namespace spoutlab {
+
+Sartori::Sartori(const Parameters&) {}
+
+double Sartori::h(const HeatTransferCell& cell, const GasThermalProperties& gas) const {
+  const double re = heatTransferReynolds(cell, gas);
+  const double nu = 1.54 * std::cbrt(gas.prandtl()) * std::pow(re, 0.57);
+  return nu * gas.kappa / cell.diameter;
+}
+
+}  // namespace spoutlab
