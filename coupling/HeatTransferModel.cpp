@@ -1,5 +1,6 @@
 #include "HeatTransferModel.hpp"
 
+#include "Gunn.hpp"
 #include "InputError.hpp"
 #include "RanzMarshall.hpp"
 #include "Sartori.hpp"
@@ -25,6 +26,7 @@ const std::vector<std::pair<const char*, HeatTransferFactory>>& heatTransferTabl
   static const std::vector<std::pair<const char*, HeatTransferFactory>> table = {
       entry<RanzMarshall>("RanzMarshall"),
       entry<Sartori>("Sartori"),
+      entry<Gunn>("Gunn"),
   };
   return table;
 }
