@@ -4,6 +4,7 @@
 #include "InputError.hpp"
 #include "RanzMarshall.hpp"
 #include "Sartori.hpp"
+#include "SpoutDowncomer.hpp"
 
 #include <functional>
 #include <utility>
@@ -27,6 +28,7 @@ const std::vector<std::pair<const char*, HeatTransferFactory>>& heatTransferTabl
       entry<RanzMarshall>("RanzMarshall"),
       entry<Sartori>("Sartori"),
       entry<Gunn>("Gunn"),
+      entry<SpoutDowncomer>("spoutDowncomer"),
   };
   return table;
 }
