@@ -1,5 +1,6 @@
 #pragma once
-// One DEM particle as the coupling sees it: position, velocity, radius (SI).
+// One DEM particle as the coupling sees it: position, velocity, radius and,
+// with heat transfer, temperature (SI).
 
 #include "Vec3.hpp"
 
@@ -12,8 +13,10 @@ struct Particle {
   Vec3 x;       // centre [m]
   Vec3 v;       // velocity [m/s]
   double radius = 0.0;  // [m]
+  double temperature = 0.0;  // [K]; 0 when the run has no heat transfer
 
   double volume() const { return 4.0 / 3.0 * std::acos(-1.0) * radius * radius * radius; }
+  double surface() const { return 4.0 * std::acos(-1.0) * radius * radius; }
 };
 
 }  // namespace spoutlab
