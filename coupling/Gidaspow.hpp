@@ -1,6 +1,6 @@
 #pragma once
 // Gidaspow drag: Ergun in dense regions, Wen-Yu in dilute ones (the source
-// papers' model, DESIGN.md section 3).
+// papers' model, docs/DESIGN.md §3.3).
 //   eps <  eps_s: beta = 150 (1-eps)^2 mu/(eps d^2) + 1.75 (1-eps) rho |w|/d
 //   eps >= eps_s: beta = 3/4 C_d rho eps (1-eps) |w|/d eps^-2.65,
 //                 C_d = 24/Re (1 + 0.15 Re^0.687) (Re < 1000), 0.44 (Re >= 1000)

@@ -1,5 +1,5 @@
 #pragma once
-// Gas <-> particle momentum exchange (DESIGN.md section 3, steps 4-6).
+// Gas <-> particle momentum exchange (docs/DESIGN.md §3 steps 4-6).
 //
 // Per cell c, from the particle-cell map:
 //   S_c   = sum_i w_ic V_i                 solid volume, phi_c = S_c/V_c (raw)

@@ -1,6 +1,6 @@
 #pragma once
-// Particle -> cell mapping and the solid volume per cell (DESIGN.md section 3,
-// step 3). A model decides how one particle's volume is shared among cells;
+// Particle -> cell mapping and the solid volume per cell (docs/DESIGN.md
+// §3 step 3). A model decides how one particle's volume is shared among cells;
 // the base class does the bookkeeping every model needs: locating the centre,
 // reporting particles outside the mesh, and summing solid volume per cell, so
 // that sum over cells of solidVolume = sum of particle volumes to round-off.
