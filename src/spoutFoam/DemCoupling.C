@@ -4,6 +4,7 @@
 #include "DemCoupling.H"
 
 #include "DemTimeStep.hpp"
+#include "FoamParameters.H"
 #include "InputError.hpp"
 #include "OStringStream.H"
 
@@ -16,38 +17,6 @@ namespace spoutlab
 
 namespace
 {
-
-// An OpenFOAM sub-dictionary as the coupling library's Parameters.
-Parameters toParameters(const Foam::dictionary& parent, const Foam::word& name)
-{
-    Parameters params("constant/couplingProperties/" + name);
-    const Foam::dictionary* dict = parent.findDict(name);
-    if (!dict) return params;
-    for (const Foam::entry& e : *dict)
-    {
-        if (e.isDict()) continue;
-        std::string value;
-        const Foam::ITstream& is = e.stream();
-        forAll(is, i)
-        {
-            if (i) value += ' ';
-            const Foam::token& t = is[i];
-            if (t.isStringType())
-            {
-                value += t.stringToken();   // words and strings, unquoted
-            }
-            else
-            {
-                Foam::OStringStream os;
-                os << t;
-                value += os.str();
-            }
-        }
-        params.set(e.keyword(), value);
-    }
-    return params;
-}
-
 
 std::string format(double value)
 {
@@ -66,25 +35,6 @@ void sumOverRanks(int* data, std::size_t n)
 void sumOverRanks(double* data, std::size_t n)
 {
     MPI_Allreduce(MPI_IN_PLACE, data, int(n), MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
-}
-
-
-// A run-time selected model name must be one the library knows.
-void requireKnown
-(
-    const std::string& key,
-    const std::string& name,
-    const std::vector<std::string>& known
-)
-{
-    if (std::find(known.begin(), known.end(), name) != known.end()) return;
-    std::string list;
-    for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
-    throw InputError
-    (
-        "constant/couplingProperties: key '" + key + "' expected one of "
-      + list + ", got '" + name + "'"
-    );
 }
 
 
@@ -121,6 +71,7 @@ DemCoupling::DemCoupling
     const Foam::volVectorField& U,
     const Foam::volScalarField& p,
     Foam::volScalarField& voidfraction,
+    const Foam::surfaceScalarField& phi,
     const Foam::dimensionedScalar& rho,
     const Foam::dimensionedScalar& mu,
     const Foam::uniformDimensionedVectorField& g
@@ -201,6 +152,7 @@ DemCoupling::DemCoupling
 
     startDem();
     checkTimeSteps();
+    startHeat(phi, rho.value(), mu.value());
 
     if (Foam::Pstream::master())
     {
@@ -222,7 +174,16 @@ DemCoupling::DemCoupling
                 << "time [s],particles,particle mass [kg],solid volume [m3],"
                 << "min voidfraction,"
                 << "particle drag x [N],particle drag y [N],particle drag z [N],"
-                << "gas exchange x [N],gas exchange y [N],gas exchange z [N]\n";
+                << "gas exchange x [N],gas exchange y [N],gas exchange z [N]";
+            if (heat_)
+            {
+                *log_
+                    << ",heat to particles [W],heat from gas [W],"
+                    << "gas enthalpy in [W],gas enthalpy out [W],"
+                    << "gas outlet temperature [K],gas energy [J],"
+                    << "particle energy [J],mean particle temperature [K]";
+            }
+            *log_ << '\n';
         }
         // ParaView opens OpenFOAM cases through an empty <case>.foam file
         const Foam::fileName stub =
@@ -232,8 +193,9 @@ DemCoupling::DemCoupling
 
     // particles at the start time: map them so the first gas step already
     // sees the bed, and so the fluid forces exist before the first DEM step
-    const VoidFractionResult vf = mapParticles();
-    exchange(vf);
+    vf_ = mapParticles();
+    exchange(vf_);
+    transferHeat();
     voidfraction_.oldTime() = voidfraction_;
     writeParticles();
 }
@@ -281,6 +243,32 @@ void DemCoupling::startDem()
     );
     Foam::Info<< "LIGGGHTS: " << dem_->nParticles() << " particles from "
         << input << ", DEM time step " << dem_->timeStep() << " s" << Foam::endl;
+}
+
+
+void DemCoupling::startHeat
+(
+    const Foam::surfaceScalarField& phi, double rho, double mu
+)
+{
+    const Foam::word model =
+        dict_.getOrDefault<Foam::word>("heatTransferModel", "none");
+    if (model == "none") return;
+    if (!dem_->hasHeat())
+    {
+        throw InputError
+        (
+            "LIGGGHTS input '" + liggghtsInput_ + "': heat transfer "
+            "(heatTransferModel " + model + " in constant/couplingProperties) "
+            "expects the particle temperatures of 'fix ID all couple/cfd/"
+            "convection T0 <K>' and 'fix ID all property/global "
+            "thermalCapacity peratomtype ...'"
+        );
+    }
+    heat_.reset(new HeatCoupling(mesh_, dict_, model, voidfraction_, phi, rho, mu));
+    Foam::Info<< "Heat transfer: " << model.c_str() << ", gas c_p "
+        << heat_->gas().cp << " J/kg/K, k_c " << heat_->gas().kappa
+        << " W/m/K" << Foam::endl;
 }
 
 
@@ -404,6 +392,11 @@ void DemCoupling::exchange(const VoidFractionResult& vf)
     fluidForce_ = ex.totalForce;
     dragForce_ = ex.dragForce;
     dem_->setFluidForces(fluidForce_);
+    if (heat_)
+    {
+        heat_->updateCoefficients(locator_, particles_, vf.map, ex, U_);
+        heat_->checkTimeStep(dem_->minHeatCapacityPerArea());
+    }
     logStep(vf, ex);
 }
 
@@ -428,23 +421,70 @@ void DemCoupling::logStep(const VoidFractionResult& vf, const ExchangeResult& ex
         << "min voidfraction " << epsMin
         << ", drag on particles (" << sums[1] << ' ' << sums[2] << ' '
         << sums[3] << ") N" << Foam::endl;
+    std::ostringstream row;
+    row << std::setprecision(10) << mesh_.time().value() << ','
+        << particles_.size() << ',' << mass << ',' << sums[0] << ',' << epsMin;
+    for (int k = 1; k < 7; ++k) row << ',' << sums[k];
+    logRow_ = row.str();
+    if (!heat_) endLogRow();   // with heat, the row ends after the gas energy
+}
+
+
+void DemCoupling::logHeat()
+{
+    double toParticles = 0;
+    for (double q : heatFlux_) toParticles += q;
+    sumOverRanks(&toParticles, 1);
+    const GasHeatBalance b = heat_->balance();
+    const double Ep = dem_->thermalEnergy();
+    const double meanTp = Ep/std::max(dem_->totalHeatCapacity(), 1e-300);
+
+    std::ostringstream row;
+    row << std::setprecision(10) << ',' << toParticles << ',' << b.gasGave
+        << ',' << b.inflow << ',' << b.outflow << ',' << b.outletTemperature
+        << ',' << b.gasEnergy << ',' << Ep << ',' << meanTp;
+    logRow_ += row.str();
+    Foam::Info<< "Heat: " << toParticles << " W to the particles, mean "
+        << "particle temperature " << meanTp << " K, gas outlet "
+        << b.outletTemperature << " K" << Foam::endl;
+    endLogRow();
+}
+
+
+void DemCoupling::endLogRow()
+{
     if (log_)
     {
-        *log_ << std::setprecision(10) << mesh_.time().value() << ','
-              << particles_.size() << ',' << mass << ',' << sums[0] << ','
-              << epsMin;
-        for (int k = 1; k < 7; ++k) *log_ << ',' << sums[k];
-        *log_ << '\n';
+        *log_ << logRow_ << '\n';
         log_->flush();
     }
+    logRow_.clear();
 }
 
 
 void DemCoupling::evolve()
 {
     dem_->run(couplingInterval_);
-    const VoidFractionResult vf = mapParticles();
-    exchange(vf);
+    vf_ = mapParticles();
+    exchange(vf_);
+}
+
+
+void DemCoupling::solveEnergy()
+{
+    if (!heat_) return;
+    heat_->solveGas();
+    transferHeat();
+}
+
+
+void DemCoupling::transferHeat()
+{
+    if (!heat_) return;
+    // this rank's share, like the forces
+    heatFlux_ = heat_->particleHeatFlux(particles_, vf_.map);
+    dem_->setHeatFluxes(heatFlux_);
+    logHeat();
 }
 
 
@@ -485,10 +525,21 @@ void DemCoupling::writeParticles()
 {
     // forces are held per rank (each rank's share); the file gets the sums
     std::vector<Vec3> fluid = fluidForce_, drag = dragForce_;
+    std::vector<double> heatFlux = heatFlux_, h;
+    if (heat_) h = heat_->particleH(vf_.map);
     if (Foam::Pstream::parRun())
     {
         sumOverRanks(fluid);
         sumOverRanks(drag);
+        sumOverRanks(heatFlux.data(), heatFlux.size());
+        sumOverRanks(h.data(), h.size());
+    }
+    std::vector<std::pair<std::string, std::vector<double>>> scalars;
+    if (heat_)
+    {
+        std::vector<double> T(particles_.size());
+        for (std::size_t i = 0; i < T.size(); ++i) T[i] = particles_[i].temperature;
+        scalars = {{"temperature", T}, {"heatFlux", heatFlux}, {"h", h}};
     }
     if (Foam::Pstream::master())
     {
@@ -496,7 +547,7 @@ void DemCoupling::writeParticles()
         vtk_.write
         (
             runTime.value(), runTime.timeName(), particles_,
-            {{"fluidForce", fluid}, {"dragForce", drag}}
+            {{"fluidForce", fluid}, {"dragForce", drag}}, scalars
         );
     }
 }

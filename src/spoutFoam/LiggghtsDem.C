@@ -18,6 +18,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
+#include <stdexcept>
 
 namespace spoutlab
 {
@@ -70,6 +71,8 @@ LiggghtsDem::LiggghtsDem
 :
     lmp_(nullptr),
     dragForce_(nullptr),
+    temperature_(nullptr),
+    convectiveHeatFlux_(nullptr),
     comm_(comm),
     setupDone_(false),
     stepsRun_(0)
@@ -107,6 +110,7 @@ LiggghtsDem::LiggghtsDem
         lmp_->input->file(inputFile.c_str());
     }
     findCouplingFixes(inputFile);
+    findHeatFixes(inputFile);
 }
 
 
@@ -154,6 +158,62 @@ void LiggghtsDem::findCouplingFixes(const std::string& inputFile)
 }
 
 
+void LiggghtsDem::findHeatFixes(const std::string& inputFile)
+{
+    using namespace LAMMPS_NS;
+    auto* modify = lmp_->modify;
+    convectiveHeatFlux_ = static_cast<FixPropertyAtom*>
+    (
+        modify->find_fix_property
+        (
+            "convectiveHeatFlux", "property/atom", "scalar", 0, 0, "spoutFoam",
+            false
+        )
+    );
+    if (!convectiveHeatFlux_) return;
+
+    temperature_ = static_cast<FixPropertyAtom*>
+    (
+        modify->find_fix_property
+        (
+            "Temp", "property/atom", "scalar", 0, 0, "spoutFoam", false
+        )
+    );
+    const int nTypes = lmp_->atom->ntypes;
+    auto* capacity = static_cast<FixPropertyGlobal*>
+    (
+        modify->find_fix_property
+        (
+            "thermalCapacity", "property/global", "peratomtype", nTypes, 0,
+            "spoutFoam", false
+        )
+    );
+    if (!temperature_ || !capacity)
+    {
+        throw InputError
+        (
+            "LIGGGHTS input '" + inputFile + "': 'fix couple/cfd/convection' "
+            "expects 'fix ID all property/global thermalCapacity peratomtype "
+            "c_1 ... c_n' [J/kg/K] for the particle temperatures"
+        );
+    }
+    heatCapacity_.resize(nTypes);
+    for (int t = 0; t < nTypes; ++t)
+    {
+        heatCapacity_[t] = capacity->compute_vector(t);
+        if (!(heatCapacity_[t] > 0))
+        {
+            throw InputError
+            (
+                "LIGGGHTS input '" + inputFile + "': thermalCapacity of atom "
+                "type " + std::to_string(t + 1) + " expected a positive heat "
+                "capacity [J/kg/K], got " + std::to_string(heatCapacity_[t])
+            );
+        }
+    }
+}
+
+
 void LiggghtsDem::run(int nSteps)
 {
     Activity doing("running " + std::to_string(nSteps) + " DEM steps");
@@ -188,7 +248,8 @@ void LiggghtsDem::gather(std::vector<Particle>& particles)
 {
     const auto* atom = lmp_->atom;
     const int nLocal = atom->nlocal;
-    constexpr int width = 8;   // id, x(3), v(3), radius
+    const int width = hasHeat() ? 9 : 8;   // id, x(3), v(3), radius[, T]
+    const double* T = hasHeat() ? temperature_->vector_atom : nullptr;
 
     std::vector<double> local(std::size_t(nLocal)*width);
     for (int i = 0; i < nLocal; ++i)
@@ -201,6 +262,7 @@ void LiggghtsDem::gather(std::vector<Particle>& particles)
             row[4 + d] = atom->v[i][d];
         }
         row[7] = atom->radius[i];
+        if (T) row[8] = T[i];
     }
 
     int nProcs = 1;
@@ -236,6 +298,7 @@ void LiggghtsDem::gather(std::vector<Particle>& particles)
         p.x = Vec3{r[1], r[2], r[3]};
         p.v = Vec3{r[4], r[5], r[6]};
         p.radius = r[7];
+        p.temperature = T ? r[8] : 0.0;
     }
 
     // remembered so setFluidForces() can find each local atom's force
@@ -244,36 +307,97 @@ void LiggghtsDem::gather(std::vector<Particle>& particles)
 }
 
 
-void LiggghtsDem::setFluidForces(const std::vector<Vec3>& forces)
+template<class Store>
+void LiggghtsDem::scatterToAtoms(std::vector<double>& rows, int width, Store store)
 {
-    if (forces.size() != gatheredIds_.size())
+    if (rows.size() != std::size_t(width)*gatheredIds_.size())
     {
-        throw std::logic_error("setFluidForces: force count differs from gather");
-    }
-    std::vector<double> summed(3*forces.size());
-    for (std::size_t i = 0; i < forces.size(); ++i)
-    {
-        summed[3*i] = forces[i].x;
-        summed[3*i + 1] = forces[i].y;
-        summed[3*i + 2] = forces[i].z;
+        throw std::logic_error("LiggghtsDem: per-particle data differs from gather");
     }
     MPI_Allreduce
     (
-        MPI_IN_PLACE, summed.data(), int(summed.size()), MPI_DOUBLE, MPI_SUM,
-        comm_
+        MPI_IN_PLACE, rows.data(), int(rows.size()), MPI_DOUBLE, MPI_SUM, comm_
     );
 
     // the atom map (atom_modify map array, required of coupled inputs)
     // gives each gathered id's local atom; ids owned by other ranks map to
     // ghosts or nothing
     auto* atom = lmp_->atom;
-    double** drag = dragForce_->array_atom;
     for (std::size_t k = 0; k < gatheredIds_.size(); ++k)
     {
         const int i = atom->map(int(gatheredIds_[k]));
         if (i < 0 || i >= atom->nlocal) continue;
-        for (int d = 0; d < 3; ++d) drag[i][d] = summed[3*k + d];
+        store(i, &rows[std::size_t(width)*k]);
     }
+}
+
+
+void LiggghtsDem::setFluidForces(const std::vector<Vec3>& forces)
+{
+    std::vector<double> rows(3*forces.size());
+    for (std::size_t i = 0; i < forces.size(); ++i)
+    {
+        rows[3*i] = forces[i].x;
+        rows[3*i + 1] = forces[i].y;
+        rows[3*i + 2] = forces[i].z;
+    }
+    double** drag = dragForce_->array_atom;
+    scatterToAtoms
+    (
+        rows, 3,
+        [drag](int i, const double* f) { for (int d = 0; d < 3; ++d) drag[i][d] = f[d]; }
+    );
+}
+
+
+void LiggghtsDem::setHeatFluxes(const std::vector<double>& q)
+{
+    std::vector<double> rows(q);
+    double* flux = convectiveHeatFlux_->vector_atom;
+    scatterToAtoms(rows, 1, [flux](int i, const double* qi) { flux[i] = *qi; });
+}
+
+
+double LiggghtsDem::thermalEnergy() const
+{
+    const auto* atom = lmp_->atom;
+    const double* T = temperature_->vector_atom;
+    double E = 0;
+    for (int i = 0; i < atom->nlocal; ++i)
+    {
+        E += atom->rmass[i]*heatCapacity_[atom->type[i] - 1]*T[i];
+    }
+    MPI_Allreduce(MPI_IN_PLACE, &E, 1, MPI_DOUBLE, MPI_SUM, comm_);
+    return E;
+}
+
+
+double LiggghtsDem::totalHeatCapacity() const
+{
+    const auto* atom = lmp_->atom;
+    double C = 0;
+    for (int i = 0; i < atom->nlocal; ++i)
+    {
+        C += atom->rmass[i]*heatCapacity_[atom->type[i] - 1];
+    }
+    MPI_Allreduce(MPI_IN_PLACE, &C, 1, MPI_DOUBLE, MPI_SUM, comm_);
+    return C;
+}
+
+
+double LiggghtsDem::minHeatCapacityPerArea() const
+{
+    const auto* atom = lmp_->atom;
+    const double pi = 3.14159265358979323846;
+    double cMin = 1e300;
+    for (int i = 0; i < atom->nlocal; ++i)
+    {
+        const double r = atom->radius[i];
+        const double c = atom->rmass[i]*heatCapacity_[atom->type[i] - 1];
+        cMin = std::min(cMin, c/(4*pi*r*r));
+    }
+    MPI_Allreduce(MPI_IN_PLACE, &cMin, 1, MPI_DOUBLE, MPI_MIN, comm_);
+    return cMin;
 }
 
 

@@ -50,7 +50,8 @@ void ParticleVtkSeries::write
     double time,
     const std::string& timeName,
     const std::vector<Particle>& particles,
-    const std::vector<std::pair<std::string, std::vector<Vec3>>>& vectors
+    const std::vector<std::pair<std::string, std::vector<Vec3>>>& vectors,
+    const std::vector<std::pair<std::string, std::vector<double>>>& scalars
 ) const
 {
     std::filesystem::create_directories(directory_);
@@ -90,6 +91,14 @@ void ParticleVtkSeries::write
                 os, named.first.c_str(), n,
                 [&](std::size_t i) { return i < v.size() ? v[i] : Vec3{}; }
             );
+        }
+        for (const auto& named : scalars)
+        {
+            const std::vector<double>& v = named.second;
+            os << "        <DataArray type=\"Float64\" Name=\"" << named.first
+               << "\" format=\"ascii\">\n";
+            for (std::size_t i = 0; i < n; ++i) os << ' ' << (i < v.size() ? v[i] : 0.0) << '\n';
+            os << "        </DataArray>\n";
         }
         os << "      </PointData>\n"
            << "      <Verts>\n"

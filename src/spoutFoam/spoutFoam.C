@@ -10,7 +10,9 @@ Description
     force of the last exchange; particles are located, the void fraction,
     the cell-averaged particle velocity Us and the exchange coefficient Ksl
     (beta) are computed; the fluid forces go back to LIGGGHTS; then the gas
-    is solved with beta*(Us - U) implicit in U.  Settings are in
+    is solved with beta*(Us - U) implicit in U.  With heat transfer, the gas
+    energy equation follows, with the exchange implicit in T, and each
+    particle's heat flux goes back to LIGGGHTS.  Settings are in
     constant/couplingProperties.
 \*---------------------------------------------------------------------------*/
 
@@ -52,7 +54,7 @@ int main(int argc, char *argv[])
 
         #include "createFields.H"
 
-        spoutlab::DemCoupling coupling(mesh, U, p, voidfraction, rho, mu, g);
+        spoutlab::DemCoupling coupling(mesh, U, p, voidfraction, phi, rho, mu, g);
 
         Info<< "\nStarting time loop\n" << endl;
 
@@ -68,6 +70,9 @@ int main(int argc, char *argv[])
             {
                 #include "pEqn.H"
             }
+
+            // gas energy (eq 4) and the particles' heat, if the case has them
+            coupling.solveEnergy();
 
             coupling.checkCourant(phiU);
             // the last step is always written: the final state, the time

@@ -1,0 +1,332 @@
+/*---------------------------------------------------------------------------*\
+    SpoutLab: gas-to-particle heat transfer on the CFD side.
+\*---------------------------------------------------------------------------*/
+#include "HeatCoupling.H"
+
+#include "FoamParameters.H"
+#include "InputError.hpp"
+#include "OStringStream.H"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace spoutlab
+{
+
+namespace
+{
+
+// A positive number from a dictionary, or one line naming file and key.
+double positiveEntry
+(
+    const Foam::dictionary& dict,
+    const std::string& file,
+    const Foam::word& key,
+    const std::string& what
+)
+{
+    const Foam::entry* e = dict.findEntry(key, Foam::keyType::LITERAL);
+    std::string got;
+    if (e && !e->isDict())
+    {
+        Foam::ITstream& is = e->stream();
+        if (is.size() == 1 && is[0].isNumber())
+        {
+            const double value = is[0].number();
+            if (value > 0 && std::isfinite(value)) return value;
+        }
+        Foam::OStringStream os;
+        forAll(is, i) os << (i ? " " : "") << is[i];
+        got = os.str();
+    }
+    throw InputError
+    (
+        file + ": key '" + key + "' expected " + what
+      + (e ? ", got '" + got + "'" : " (missing; heat transfer needs it)")
+    );
+}
+
+
+GasThermalProperties readGas(const Foam::fvMesh& mesh, double rho, double mu)
+{
+    const Foam::IOdictionary transport
+    (
+        Foam::IOobject
+        (
+            "transportProperties", mesh.time().constant(), mesh,
+            Foam::IOobject::MUST_READ, Foam::IOobject::NO_WRITE, false
+        )
+    );
+    const std::string file = "constant/transportProperties";
+    return GasThermalProperties
+    {
+        rho, mu,
+        positiveEntry(transport, file, "Cp", "the gas specific heat c_p [J/kg/K], a positive number"),
+        positiveEntry(transport, file, "kappa", "the gas thermal conductivity k_c [W/m/K], a positive number")
+    };
+}
+
+
+Foam::IOobject writtenField(const Foam::fvMesh& mesh, const Foam::word& name)
+{
+    return Foam::IOobject
+    (
+        name, mesh.time().timeName(), mesh,
+        Foam::IOobject::NO_READ, Foam::IOobject::AUTO_WRITE
+    );
+}
+
+
+Foam::IOobject scratchField(const Foam::fvMesh& mesh, const Foam::word& name)
+{
+    return Foam::IOobject
+    (
+        name, mesh.time().timeName(), mesh,
+        Foam::IOobject::NO_READ, Foam::IOobject::NO_WRITE
+    );
+}
+
+
+std::unique_ptr<HeatTransferModel> makeModel
+(
+    const Foam::dictionary& couplingDict, const Foam::word& name
+)
+{
+    requireKnown("heatTransferModel", name, HeatTransferModel::available());
+    return HeatTransferModel::New(name, toParameters(couplingDict, name + "Props"));
+}
+
+const Foam::dimensionSet dimHeatPerVolume(1, -1, -3, 0, 0);            // W/m3
+const Foam::dimensionSet dimHeatPerVolumeKelvin(1, -1, -3, -1, 0);     // W/m3/K
+
+} // namespace
+
+
+HeatCoupling::HeatCoupling
+(
+    const Foam::fvMesh& mesh,
+    const Foam::dictionary& couplingDict,
+    const Foam::word& modelName,
+    const Foam::volScalarField& voidfraction,
+    const Foam::surfaceScalarField& phi,
+    double rho,
+    double mu
+)
+:
+    mesh_(mesh),
+    voidfraction_(voidfraction),
+    phi_(phi),
+    gas_(readGas(mesh, rho, mu)),
+    exchange_(makeModel(couplingDict, modelName)),
+    T_
+    (
+        Foam::IOobject
+        (
+            "T", mesh.time().timeName(), mesh,
+            Foam::IOobject::MUST_READ, Foam::IOobject::AUTO_WRITE
+        ),
+        mesh
+    ),
+    hp_
+    (
+        writtenField(mesh, "hp"), mesh,
+        Foam::dimensionedScalar(Foam::dimensionSet(1, 0, -3, -1, 0), Foam::Zero)
+    ),
+    Rep_(writtenField(mesh, "Rep"), mesh, Foam::dimensionedScalar(Foam::dimless, Foam::Zero)),
+    Qs_
+    (
+        writtenField(mesh, "Qs"), mesh,
+        Foam::dimensionedScalar(dimHeatPerVolume, Foam::Zero)
+    ),
+    K_(scratchField(mesh, "Kheat"), mesh, Foam::dimensionedScalar(dimHeatPerVolumeKelvin, Foam::Zero)),
+    S_(scratchField(mesh, "Sheat"), mesh, Foam::dimensionedScalar(dimHeatPerVolume, Foam::Zero))
+{
+    checkCase();
+    const Foam::volVectorField& C = mesh.C();
+    centres_.resize(C.size());
+    forAll(C, i) centres_[i] = Vec3{C[i].x(), C[i].y(), C[i].z()};
+}
+
+
+void HeatCoupling::checkCase() const
+{
+    const double Tmin = Foam::gMin(T_.primitiveField());
+    double TbMin = 1e300;
+    forAll(T_.boundaryField(), patchi)
+    {
+        const Foam::scalarField& Tb = T_.boundaryField()[patchi];
+        if (Tb.size()) TbMin = std::min(TbMin, Foam::min(Tb));
+    }
+    Foam::reduce(TbMin, Foam::minOp<double>());
+    if (!(std::min(Tmin, TbMin) > 0))
+    {
+        throw InputError
+        (
+            mesh_.time().timeName() + "/T: expected absolute gas temperatures "
+            "[K] above 0, got a minimum of " + std::to_string(std::min(Tmin, TbMin))
+        );
+    }
+    if (!mesh_.solutionDict().subDict("solvers").found("T"))
+    {
+        throw InputError
+        (
+            "system/fvSolution: key 'solvers/T' is missing (heat transfer "
+            "solves the gas temperature T)"
+        );
+    }
+    const Foam::dictionary& div = mesh_.schemesDict().subDict("divSchemes");
+    if (!div.found("div(phi,T)") && !div.found("default"))
+    {
+        throw InputError
+        (
+            "system/fvSchemes: key 'divSchemes/div(phi,T)' is missing (heat "
+            "transfer convects the gas temperature T)"
+        );
+    }
+}
+
+
+void HeatCoupling::updateCoefficients
+(
+    const CellLocator& mesh,
+    const std::vector<Particle>& particles,
+    const ParticleCellMap& map,
+    const ExchangeResult& momentum,
+    const Foam::volVectorField& U
+)
+{
+    std::vector<Vec3> u(U.size());
+    forAll(U, i) u[i] = Vec3{U[i].x(), U[i].y(), U[i].z()};
+    const std::vector<double> eps
+    (
+        voidfraction_.primitiveField().begin(), voidfraction_.primitiveField().end()
+    );
+    cells_ = exchange_.cellCoefficients
+    (
+        mesh, particles, map, momentum, GasHeatCellFields{centres_, u, eps}, gas_
+    );
+    forAll(K_, i)
+    {
+        K_[i] = cells_.K[i];
+        S_[i] = cells_.S[i];
+        hp_[i] = cells_.h[i];
+        Rep_[i] = cells_.reynolds[i];
+    }
+    K_.correctBoundaryConditions();
+    S_.correctBoundaryConditions();
+    hp_.correctBoundaryConditions();
+    Rep_.correctBoundaryConditions();
+    updateQs();
+}
+
+
+void HeatCoupling::solveGas()
+{
+    const Foam::dimensionedScalar rhoCp
+    (
+        "rhoCp", Foam::dimensionSet(1, -1, -2, -1, 0), gas_.rho*gas_.cp
+    );
+    const Foam::dimensionedScalar kappa
+    (
+        "kappa", Foam::dimensionSet(1, 1, -3, -1, 0), gas_.kappa
+    );
+    // eq 4 times rho c_p, conservative in eps T so the energy the gas holds
+    // changes exactly by what crosses the boundaries and what the particles
+    // take (the log's balance depends on it)
+    Foam::fvScalarMatrix TEqn
+    (
+        rhoCp*(Foam::fvm::ddt(voidfraction_, T_) + Foam::fvm::div(phi_, T_))
+      - Foam::fvm::laplacian(kappa, T_)
+     ==
+        S_ - Foam::fvm::Sp(K_, T_)
+    );
+    TEqn.solve();
+    updateQs();
+}
+
+
+void HeatCoupling::updateQs()
+{
+    Qs_.primitiveFieldRef() = S_.primitiveField() - K_.primitiveField()*T_.primitiveField();
+    Qs_.correctBoundaryConditions();
+}
+
+
+std::vector<double> HeatCoupling::particleHeatFlux
+(
+    const std::vector<Particle>& particles,
+    const ParticleCellMap& map
+) const
+{
+    const std::vector<double> T(T_.primitiveField().begin(), T_.primitiveField().end());
+    return exchange_.particleHeatFlux(particles, map, cells_, T);
+}
+
+
+std::vector<double> HeatCoupling::particleH(const ParticleCellMap& map) const
+{
+    return HeatExchange::particleH(map, cells_);
+}
+
+
+void HeatCoupling::checkTimeStep(double minHeatCapacityPerArea) const
+{
+    const double hMax = Foam::gMax(hp_.primitiveField());
+    if (!(hMax > 0)) return;
+    const double tau = minHeatCapacityPerArea/hMax;
+    const double dt = mesh_.time().deltaTValue();
+    if (dt > 0.1*tau)
+    {
+        std::ostringstream os;
+        os << "system/controlDict: key 'deltaT' expected at most 0.1 x the "
+           << "shortest particle heating time m c_p/(h A) = " << tau
+           << " s (h = " << hMax << " W/m2/K) for the explicit particle "
+           << "temperature update, got " << dt << " s";
+        throw InputError(os.str());
+    }
+}
+
+
+GasHeatBalance HeatCoupling::balance() const
+{
+    const double rhoCp = gas_.rho*gas_.cp;
+    const Foam::scalarField& V = mesh_.V().field();
+    GasHeatBalance b{0, 0, 0, 0, 0};
+    double outFlux = 0, outFluxT = 0;
+    forAll(T_.boundaryField(), patchi)
+    {
+        const Foam::fvPatchScalarField& Tb = T_.boundaryField()[patchi];
+        if (Tb.coupled()) continue;
+        const Foam::scalarField& phib = phi_.boundaryField()[patchi];
+        const Foam::scalarField snGrad(Tb.snGrad());
+        const Foam::scalarField& magSf = mesh_.magSf().boundaryField()[patchi];
+        forAll(Tb, facei)
+        {
+            // what the discretised equation lets through this face, into
+            // the gas: convection phi T (phi > 0 leaves) and conduction
+            const double into =
+                -rhoCp*phib[facei]*Tb[facei] + gas_.kappa*snGrad[facei]*magSf[facei];
+            if (phib[facei] < 0) b.inflow += into;
+            else b.outflow -= into;
+            if (phib[facei] > 0)
+            {
+                outFlux += phib[facei];
+                outFluxT += phib[facei]*Tb[facei];
+            }
+        }
+    }
+    forAll(V, i)
+    {
+        b.gasGave += V[i]*(K_[i]*T_[i] - S_[i]);
+        b.gasEnergy += rhoCp*V[i]*voidfraction_[i]*T_[i];
+    }
+    double sums[6] = {b.gasGave, b.inflow, b.outflow, b.gasEnergy, outFlux, outFluxT};
+    for (double& s : sums) Foam::reduce(s, Foam::sumOp<double>());
+    return GasHeatBalance
+    {
+        sums[0], sums[1], sums[2], sums[4] > 0 ? sums[5]/sums[4] : 0.0, sums[3]
+    };
+}
+
+} // namespace spoutlab
