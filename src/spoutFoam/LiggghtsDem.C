@@ -74,7 +74,6 @@ LiggghtsDem::LiggghtsDem
     temperature_(nullptr),
     convectiveHeatFlux_(nullptr),
     comm_(comm),
-    setupDone_(false),
     stepsRun_(0)
 {
     if (!readable(inputFile))
@@ -111,6 +110,10 @@ LiggghtsDem::LiggghtsDem
     }
     findCouplingFixes(inputFile);
     findHeatFixes(inputFile);
+    {
+        Activity doing("setting up the DEM run");
+        setup();
+    }
 }
 
 
@@ -217,12 +220,19 @@ void LiggghtsDem::findHeatFixes(const std::string& inputFile)
 void LiggghtsDem::run(int nSteps)
 {
     Activity doing("running " + std::to_string(nSteps) + " DEM steps");
-    const std::string cmd =
-        "run " + std::to_string(nSteps)
-      + (setupDone_ ? " pre no post no" : " post no");
+    const std::string cmd = "run " + std::to_string(nSteps) + " pre no post no";
     lmp_->input->one(cmd.c_str());
-    setupDone_ = true;
     stepsRun_ += nSteps;
+}
+
+
+void LiggghtsDem::setup()
+{
+    // A run's set-up (its 'pre' phase) zeroes the per-atom properties the
+    // coupling pulls from the CFD side -- dragforce and convectiveHeatFlux --
+    // so it runs before they are set: a 'run N' with set-up would start its
+    // N steps with no fluid force and no heat flux.
+    lmp_->input->one("run 0 post no");
 }
 
 
@@ -410,7 +420,7 @@ void LiggghtsDem::deleteParticles(const std::vector<long>& ids)
     command(group);
     command("delete_atoms group spoutFoamLost");
     command("group spoutFoamLost delete");
-    setupDone_ = false;
+    setup();
 }
 
 
