@@ -93,6 +93,11 @@ class Checks:
         self.rows.append((name, value, reference, error, tolerance, unit))
         return error <= tolerance
 
+    def smaller(self, name, relative_error, tolerance):
+        """A relative error measured directly (no value/reference pair)."""
+        self.rows.append((name, relative_error, 0.0, relative_error, tolerance, ''))
+        return relative_error <= tolerance
+
     def note(self, text):
         self.notes.append(text)
 

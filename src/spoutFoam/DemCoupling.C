@@ -254,6 +254,7 @@ void DemCoupling::startHeat
     const Foam::word model =
         dict_.getOrDefault<Foam::word>("heatTransferModel", "none");
     if (model == "none") return;
+    requireKnown("heatTransferModel", model, HeatTransferModel::available());
     if (!dem_->hasHeat())
     {
         throw InputError
@@ -440,7 +441,9 @@ void DemCoupling::logHeat()
     const double meanTp = Ep/std::max(dem_->totalHeatCapacity(), 1e-300);
 
     std::ostringstream row;
-    row << std::setprecision(10) << ',' << toParticles << ',' << b.gasGave
+    // energies of order 1e6 J change by a few J per step: 15 digits keep
+    // the step-by-step balance readable from the file
+    row << std::setprecision(15) << ',' << toParticles << ',' << b.gasGave
         << ',' << b.inflow << ',' << b.outflow << ',' << b.outletTemperature
         << ',' << b.gasEnergy << ',' << Ep << ',' << meanTp;
     logRow_ += row.str();
