@@ -64,6 +64,25 @@ class Geometry:
         if self.plates and self.Wd / 2 + self.t >= self.W / 2:
             sys.exit('generate: %s: the draft plates do not fit in the vessel' % path)
         self.baseTop = (self.W - self.Wi) / 2 * self.tan   # base meets the walls
+        self.gas = {'rho': number('rhoGas'), 'mu': number('muGas')}
+        self.heat = d.get('heat', 'no') in ('yes', 'on', 'true')
+        if self.heat:
+            self.gas = {'rho': number('rhoGasHot'), 'mu': number('muGasHot'),
+                        'Cp': number('CpGas'), 'kappa': number('kappaGas')}
+            self.Tin = number('Tin', positive=False) + 273.15
+            self.T0 = number('T0', positive=False) + 273.15
+            self.cpp = number('cpp')
+            self.correlations = (d.get('spoutCorrelation', 'RanzMarshall'),
+                                 d.get('downcomerCorrelation', 'Sartori'))
+            self.spoutVoidage = number('spoutVoidage')
+            if not (self.Tin > 0 and self.T0 > 0):
+                sys.exit('generate: %s: keys Tin and T0 expected temperatures '
+                         'above -273.15 C, got %r and %r' % (path, d['Tin'], d['T0']))
+
+    def in_spout(self, x, z):
+        """The heat-transfer region rule with plates, x and z in mm: between
+        the plates' inner faces, or above their upper edge (the fountain)."""
+        return abs(x) <= self.Wd / 2 or z >= self.Hd
 
     def base_height(self, x):
         """z of the slanted base at |x| (0 over the inlet slot)."""
