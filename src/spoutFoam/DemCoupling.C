@@ -395,7 +395,7 @@ void DemCoupling::exchange(const VoidFractionResult& vf)
     dem_->setFluidForces(fluidForce_);
     if (heat_)
     {
-        heat_->updateCoefficients(locator_, particles_, vf.map, ex, U_);
+        heat_->updateCoefficients(locator_, particles_, vf.map, ex);
         heat_->checkTimeStep(dem_->minHeatCapacityPerArea());
     }
     logStep(vf, ex);

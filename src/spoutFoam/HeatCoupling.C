@@ -192,10 +192,19 @@ void HeatCoupling::updateCoefficients
     const CellLocator& mesh,
     const std::vector<Particle>& particles,
     const ParticleCellMap& map,
-    const ExchangeResult& momentum,
-    const Foam::volVectorField& U
+    const ExchangeResult& momentum
 )
 {
+    // The slip is taken with the gas velocity the face fluxes carry,
+    // reconstruct(phi)/eps: the fluxes satisfy continuity, while on a
+    // collocated grid the cell-centred U of the momentum equation departs
+    // from them where the drag changes steeply from cell to cell (in a
+    // packed bed's bottom layer by 26 %, which put h 15 % below the
+    // correlation's value at the bed's own superficial velocity).
+    const Foam::volVectorField U
+    (
+        Foam::fvc::reconstruct(phi_)/Foam::max(voidfraction_, Foam::SMALL)
+    );
     std::vector<Vec3> u(U.size());
     forAll(U, i) u[i] = Vec3{U[i].x(), U[i].y(), U[i].z()};
     const std::vector<double> eps

@@ -1,0 +1,175 @@
+"""Heat transfer in a spouted-bed run (draft-plate paper, section 4.7), from
+what spoutFoam wrote: coupling.csv (energy columns), the particle .vtp files
+(temperature, h) and the gas fields at write times (T, hp, Rep).
+
+  heatHistory.csv, particleTemperature.png
+      mean particle temperature of the spout and of the downcomer vs time
+  heatProfiles.csv, heatTransfer.png  (Fig 12)
+      h and Re across the width, averaged over the cells holding particles
+      with z/R_d in 16.927 .. 22.454 and over the write times of the window
+  particleTemperature_<t>.png, gasTemperature_<t>.png  (Fig 11)
+
+Spout and downcomer are told apart by the rule the solver's spoutDowncomer
+model uses (with plates: between the plates' inner faces, or above their
+upper edge); without plates, by the voidage of the cell.
+"""
+import os
+
+import heatcorrelations as hc
+import spoutlab_case as sc
+import spoutedbed
+
+BAND = (16.927, 22.454)   # z/R_d of Fig 12
+
+
+def write_times(case='.'):
+    """(time, name) of the write times that hold a gas temperature."""
+    out = []
+    for name in os.listdir(case):
+        try:
+            t = float(name)
+        except ValueError:
+            continue
+        if os.path.isfile(os.path.join(case, name, 'T')):
+            out.append((t, name))
+    return sorted(out)
+
+
+def vtp_times(case='.'):
+    names = [f[len('particles_'):-4] for f in os.listdir(os.path.join(case, 'particles'))
+             if f.startswith('particles_') and f.endswith('.vtp')]
+    return sorted((float(n), n) for n in names)
+
+
+def particle_history(g, case='.'):
+    """Rows (t, mean T spout, mean T downcomer, mean T all) from the .vtp files."""
+    rows = []
+    for t, name in vtp_times(case):
+        vtp = os.path.join(case, 'particles', 'particles_%s.vtp' % name)
+        T = sc.read_vtp_array(vtp, 'temperature')
+        if not T:
+            continue
+        points = sc.read_vtp_points(vtp)
+        spout = [Ti for (x, y, z), Ti in zip(points, T) if g.in_spout(1000 * x, 1000 * z)]
+        down = [Ti for (x, y, z), Ti in zip(points, T) if not g.in_spout(1000 * x, 1000 * z)]
+        mean = lambda v: sum(v) / len(v) if v else float('nan')  # noqa: E731
+        rows.append((t, mean(spout), mean(down), mean(T)))
+    return rows
+
+
+def band_profiles(g, centres, names, case='.'):
+    """h and Re of the cells holding particles in the band of Fig 12, per
+    column (x) and per region, averaged over the write times `names`."""
+    Rd = g.Wd / 2
+    cells = [i for i, (x, y, z) in enumerate(centres)
+             if BAND[0] <= 1000 * z / Rd <= BAND[1]]
+    columns, regions = {}, {'spout': [0.0, 0.0, 0], 'downcomer': [0.0, 0.0, 0]}
+    for name in names:
+        h = sc.read_field(os.path.join(case, name, 'hp'))
+        re = sc.read_field(os.path.join(case, name, 'Rep'))
+        for i in cells:
+            if re[i] <= 0:
+                continue          # no particles in the cell at this time
+            x, z = 1000 * centres[i][0], 1000 * centres[i][2]
+            col = columns.setdefault(round(x, 3), [0.0, 0.0, 0])
+            reg = regions['spout' if g.in_spout(x, z) else 'downcomer']
+            for acc in (col, reg):
+                acc[0] += h[i]
+                acc[1] += re[i]
+                acc[2] += 1
+    profile = [(x / Rd, s[0] / s[2], s[1] / s[2], s[2]) for x, s in sorted(columns.items())]
+    means = {k: (v[0] / v[2], v[1] / v[2]) if v[2] else (float('nan'),) * 2
+             for k, v in regions.items()}
+    return profile, means
+
+
+def plot_history(rows, png):
+    with open('heatHistory.csv', 'w') as f:
+        f.write('time [s],mean particle temperature spout [K],'
+                'mean particle temperature downcomer [K],mean particle temperature [K]\n')
+        for r in rows:
+            f.write('%.6g,%.8g,%.8g,%.8g\n' % r)
+    sc.plot(png, '''
+set title "Mean particle temperature (spout: between the plates and above them)"
+set xlabel "time [s]"
+set ylabel "temperature [K]"
+set key top left
+set grid
+set datafile separator ","
+plot "heatHistory.csv" skip 1 using 1:2 with linespoints lw 2 title "spout", \\
+     "heatHistory.csv" skip 1 using 1:3 with linespoints lw 2 title "downcomer", \\
+     "heatHistory.csv" skip 1 using 1:4 with lines dt 2 title "all particles"
+''')
+
+
+def plot_profiles(profile, png):
+    with open('heatProfiles.csv', 'w') as f:
+        f.write('x/R_d,h [W/m2/K],Re,samples\n')
+        for r in profile:
+            f.write('%.4f,%.6g,%.6g,%d\n' % r)
+    sc.plot(png, '''
+set multiplot layout 2,1 title "Heat-transfer coefficient and Reynolds number, z/R_d %g-%g (Fig 12)"
+set grid
+set datafile separator ","
+set xlabel "x/R_d (draft plates at +-1, walls at +-9)"
+set ylabel "h [W/m^2K]"
+plot "heatProfiles.csv" skip 1 using 1:2 with linespoints pt 7 notitle
+set ylabel "Re"
+set logscale y
+plot "heatProfiles.csv" skip 1 using 1:3 with linespoints pt 7 notitle
+unset multiplot
+''' % BAND, size=(900, 800))
+
+
+def snapshots(g, names, case='.'):
+    """Fig 11: particles and gas coloured by temperature at the given times."""
+    centres = sc.read_field(os.path.join(case, '0', 'C'))
+    pictures = []
+    for name in names:
+        vtp = os.path.join(case, 'particles', 'particles_%s.vtp' % name)
+        if os.path.isfile(vtp):
+            png = 'particleTemperature_%s.png' % name
+            spoutedbed.snapshot(g, vtp, png, 'particles, t = %s s' % name, field='temperature',
+                                vmin=g.T0, vmax=g.Tin, label='particle temperature [K]')
+            pictures.append(png)
+        png = 'gasTemperature_%s.png' % name
+        spoutedbed.field_map(g, centres, sc.read_field(os.path.join(case, name, 'T')), png,
+                             'gas, t = %s s' % name, 'gas temperature [K]', g.T0, g.Tin)
+        pictures.append(png)
+    return pictures
+
+
+def summarize(g, window, lines, case='.', pictures=True):
+    """Add the heat-transfer lines to the summary; return the numbers."""
+    rows = sc.read_coupling_log(case)
+    last = rows[-1]
+    pairwise, balance = hc.energy_balance(rows)
+    history = particle_history(g, case)
+    plot_history(history, 'particleTemperature.png')
+    times = write_times(case)
+    end = times[-1][0]
+    averaged = [n for t, n in times if t >= end - window - 1e-9 and t > 0]
+    centres = sc.read_field(os.path.join(case, '0', 'C'))
+    profile, means = band_profiles(g, centres, averaged, case)
+    plot_profiles(profile, 'heatTransfer.png')
+    out = {'Tp_spout': history[-1][1], 'Tp_downcomer': history[-1][2],
+           'T_outlet': last['gas outlet temperature [K]'],
+           'h_spout': means['spout'][0], 'Re_spout': means['spout'][1],
+           'h_downcomer': means['downcomer'][0], 'Re_downcomer': means['downcomer'][1],
+           'balance': balance, 'pairwise': pairwise, 'samples': len(averaged)}
+    lines.append('heat transfer: inlet %.1f K, start %.1f K; at t = %g s the particles '
+                 'average %.2f K in the spout, %.2f K in the downcomer; gas leaves at %.2f K'
+                 % (g.Tin, g.T0, last['time [s]'], out['Tp_spout'], out['Tp_downcomer'],
+                    out['T_outlet']))
+    lines.append('  z/R_d %g-%g, %d write times: Re %.0f (spout), %.0f (downcomer); '
+                 'h %.1f, %.1f W/m2/K' % (BAND + (len(averaged), out['Re_spout'],
+                                                  out['Re_downcomer'], out['h_spout'],
+                                                  out['h_downcomer'])))
+    lines.append('  energy: heat given by the gas = heat received by the particles to %.1e; '
+                 'whole-run balance closes to %.1e of the particles\' heat' % (pairwise, balance))
+    if pictures:
+        shown = [n for t, n in times[-3:]]
+        lines.append('  temperature pictures: ' + ' '.join(snapshots(g, shown, case)))
+    lines.append('  data: heatHistory.csv heatProfiles.csv; plots: particleTemperature.png '
+                 'heatTransfer.png')
+    return out
