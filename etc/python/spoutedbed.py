@@ -110,7 +110,11 @@ class Geometry:
 
 
 def load(case='.', overrides=()):
-    path = os.path.join(case, 'system', 'spoutedBedDict')
+    """The vessel of a case: as its last ./generate wrote it (with the
+    command line's overrides) if it has run, else from the dictionary."""
+    path = os.path.join(case, 'constant', 'spoutedBed')
+    if not os.path.isfile(path):
+        path = os.path.join(case, 'system', 'spoutedBedDict')
     return Geometry(read_dict(path, overrides), path)
 
 
@@ -128,17 +132,41 @@ def outline(g):
     return [tuple(v * mm for v in s) for s in segs]
 
 
-def snapshot(g, vtp, png, title, vmax=1.0):
+def snapshot(g, vtp, png, title, vmax=1.0, field='velocity', vmin=None,
+             label='vertical particle velocity [m/s]'):
     """Particles of one .vtp as discs in the x-z plane, coloured by their
-    vertical velocity (like the papers' flow-pattern snapshots)."""
+    vertical velocity (like the papers' flow-pattern snapshots) or by
+    another per-particle scalar (field='temperature', with vmin, vmax)."""
     import spoutlab_case as sc
     points = sc.read_vtp_points(vtp)
     radii = sc.read_vtp_array(vtp, 'radius')
-    vel = sc.read_vtp_array(vtp, 'velocity')
+    values = sc.read_vtp_array(vtp, field)
+    if field == 'velocity':
+        values = values[2::3]
     data = png[:-4] + '.dat'
     with open(data, 'w') as f:
-        for (x, y, z), r, vz in zip(points, radii, vel[2::3]):
-            f.write('%.6g %.6g %.6g %.5g\n' % (x, z, r, vz))
+        for (x, y, z), r, v in zip(points, radii, values):
+            f.write('%.6g %.6g %.6g %.5g\n' % (x, z, r, v))
+    lo = -vmax if vmin is None else vmin
+    plot_map(g, png, title, label, lo, vmax,
+             'plot "%s" using 1:2:3:4 with circles lc palette fs solid noborder notitle' % data)
+    os.remove(data)
+
+
+def field_map(g, centres, values, png, title, label, vmin, vmax):
+    """A cell field of the gas mesh in the x-z plane, one square per cell."""
+    data = png[:-4] + '.dat'
+    with open(data, 'w') as f:
+        for (x, y, z), v in zip(centres, values):
+            f.write('%.6g %.6g %.6g\n' % (x, z, v))
+    plot_map(g, png, title, label, vmin, vmax,
+             'plot "%s" using 1:2:(%g):(%g):3 with boxxyerror lc palette fs solid noborder notitle'
+             % (data, g.dx / 2000, g.dz / 2000))
+    os.remove(data)
+
+
+def plot_map(g, png, title, label, vmin, vmax, plot):
+    import spoutlab_case as sc
     arrows = '\n'.join('set arrow from %g,%g to %g,%g nohead lw 2 lc rgb "black" front'
                        % s for s in outline(g))
     height = 0.8 * g.H / g.W * 600 + 120
@@ -149,14 +177,13 @@ set xrange [%g:%g]
 set yrange [0:%g]
 set xlabel "x [m]"
 set ylabel "z [m]"
-set cblabel "vertical particle velocity [m/s]"
+set cblabel "%s"
 set cbrange [%g:%g]
 set palette defined (0 "#3b4cc0", 0.5 "#dddddd", 1 "#b40426")
 %s
-plot "%s" using 1:2:3:4 with circles lc palette fs solid noborder notitle
-''' % (title, -g.W / 2000, g.W / 2000, g.H / 1000, -vmax, vmax, arrows, data),
+%s
+''' % (title, -g.W / 2000, g.W / 2000, g.H / 1000, label, vmin, vmax, arrows, plot),
             size=(600, int(height)))
-    os.remove(data)
 
 
 # Kudra et al.'s correlation for u_ms (eq 12 of the draft-plate paper)
@@ -316,3 +343,72 @@ def profile_features(spout, downcomer, split=12.0):
         decided = not (math.isnan(lo) or math.isnan(hi))
         features.append((name, lo, hi, decided and (s < 0) == falls and (lo > hi) == falls))
     return features
+
+
+# --- running the case from a protocol ----------------------------------------
+
+def prepare_case(overrides, who, probes_only=False):
+    """Generate, mesh and settle the case in the working directory; skipped
+    when a mesh and a settled bed are there already (a protocol continuing)."""
+    import subprocess
+    if os.path.isdir('constant/polyMesh') and os.path.isfile('DEM/settled.restart'):
+        return
+    script = '''set -e
+. "$SPOUTLAB_DIR/etc/caseFunctions"
+./generate %s > log.generate
+rm -rf 0
+runApplication blockMesh
+runApplication topoSet
+runApplication subsetMesh gas -patch walls -overwrite
+restore0Dir
+runApplication postProcess -func writeCellCentres -time 0
+settleParticles "$SPOUTLAB_DIR/liggghts_inputs/spoutDraftPlates/in.settle"
+''' % ' '.join(overrides)
+    if probes_only:
+        script += ('foamDictionary -entry functions.averages.enabled -set false '
+                   'system/controlDict > /dev/null\n')
+    if subprocess.call(['bash', '-c', script]) != 0:
+        sys.exit('%s: case preparation failed' % who)
+
+
+def last_time(log):
+    """The last 'Time = ' of a solver log, or None."""
+    try:
+        with open(log, 'rb') as f:
+            f.seek(max(0, os.path.getsize(log) - 20000))
+            lines = f.read().decode(errors='replace').splitlines()
+    except OSError:
+        return None
+    for line in reversed(lines):
+        if line.startswith('Time = '):
+            return float(line.split()[2])
+    return None
+
+
+def run_spoutfoam(end, ranks, who):
+    """Run (or continue, from the latest written time) spoutFoam up to the
+    controlDict's end time, printing progress every 10 s of wall time."""
+    import subprocess
+    import time
+    if ranks > 1:
+        if not os.path.isdir('processor0'):
+            subprocess.check_call(['bash', '-c', '''set -e
+foamDictionary -entry numberOfSubdomains -set %d system/decomposeParDict > /dev/null
+foamDictionary -entry coeffs.n -set "(%d 1 1)" system/decomposeParDict > /dev/null
+decomposePar > log.decomposePar 2>&1''' % (ranks, ranks)])
+        cmd = ['mpirun', '-np', str(ranks), 'spoutFoam', '-parallel']
+    else:
+        cmd = ['spoutFoam']
+    start = last_time('log.spoutFoam') or 0.0
+    log = open('log.spoutFoam', 'a')
+    proc = subprocess.Popen(cmd, stdout=log, stderr=subprocess.STDOUT)
+    t0 = time.time()
+    while proc.poll() is None:
+        time.sleep(10)
+        now = last_time('log.spoutFoam')
+        if now:
+            rate = (time.time() - t0) / max(now - start, 1e-9)
+            print('%s: t = %.2f of %.2f s, %.0f s wall per simulated s, about %.0f min left'
+                  % (who, now, end, rate, (end - now) * rate / 60), flush=True)
+    if proc.returncode != 0:
+        sys.exit('%s: spoutFoam failed, see log.spoutFoam' % who)
