@@ -13,6 +13,7 @@ Spout and downcomer are told apart by the rule the solver's spoutDowncomer
 model uses (with plates: between the plates' inner faces, or above their
 upper edge); without plates, by the voidage of the cell.
 """
+import math
 import os
 
 import heatcorrelations as hc
@@ -124,13 +125,18 @@ unset multiplot
 def snapshots(g, names, case='.'):
     """Fig 11: particles and gas coloured by temperature at the given times."""
     centres = sc.read_field(os.path.join(case, '0', 'C'))
+    vtps = {n: os.path.join(case, 'particles', 'particles_%s.vtp' % n) for n in names}
+    vtps = {n: v for n, v in vtps.items() if os.path.isfile(v)}
+    # particles warm by a few kelvin in seconds: a scale from T_0 to the
+    # hottest particle shown, not to T_in, makes the pattern visible
+    hottest = max([max(sc.read_vtp_array(v, 'temperature')) for v in vtps.values()] + [g.T0 + 1])
     pictures = []
     for name in names:
-        vtp = os.path.join(case, 'particles', 'particles_%s.vtp' % name)
-        if os.path.isfile(vtp):
+        if name in vtps:
             png = 'particleTemperature_%s.png' % name
-            spoutedbed.snapshot(g, vtp, png, 'particles, t = %s s' % name, field='temperature',
-                                vmin=g.T0, vmax=g.Tin, label='particle temperature [K]')
+            spoutedbed.snapshot(g, vtps[name], png, 'particles, t = %s s' % name,
+                                field='temperature', vmin=g.T0, vmax=math.ceil(hottest),
+                                label='particle temperature [K]')
             pictures.append(png)
         png = 'gasTemperature_%s.png' % name
         spoutedbed.field_map(g, centres, sc.read_field(os.path.join(case, name, 'T')), png,
