@@ -2,31 +2,20 @@
 
 #include "CentreVoidFraction.hpp"
 #include "DividedVoidFraction.hpp"
-#include "InputError.hpp"
+#include "ModelTable.hpp"
 
 #include <algorithm>
-#include <functional>
-#include <utility>
 
 namespace spoutlab {
 
 namespace {
 
-using VoidFractionFactory = std::function<std::unique_ptr<VoidFractionModel>(const Parameters&)>;
-
-template <class Model>
-std::pair<const char*, VoidFractionFactory> entry(const char* name) {
-  return {name,
-          [](const Parameters& p) { return std::unique_ptr<VoidFractionModel>(new Model(p)); }};
-}
-
-// Explicit table for the same reason as the drag models: self-registering
-// statics in a static library get dropped by the linker.
-const std::vector<std::pair<const char*, VoidFractionFactory>>& voidFractionTable() {
-  static const std::vector<std::pair<const char*, VoidFractionFactory>> table = {
-      entry<DividedVoidFraction>("divided"),
-      entry<CentreVoidFraction>("centre"),
-  };
+const ModelTable<VoidFractionModel>& voidFractionTable() {
+  using T = ModelTable<VoidFractionModel>;
+  static const T table("voidFractionModel", {
+      T::entry<DividedVoidFraction>("divided"),
+      T::entry<CentreVoidFraction>("centre"),
+  });
   return table;
 }
 
@@ -97,20 +86,11 @@ VoidFractionResult VoidFractionModel::compute(const CellLocator& mesh,
   return result;
 }
 
-std::vector<std::string> VoidFractionModel::available() {
-  std::vector<std::string> names;
-  for (const auto& e : voidFractionTable()) names.emplace_back(e.first);
-  return names;
-}
+std::vector<std::string> VoidFractionModel::available() { return voidFractionTable().names(); }
 
 std::unique_ptr<VoidFractionModel> VoidFractionModel::New(const std::string& typeName,
                                                           const Parameters& props) {
-  for (const auto& e : voidFractionTable()) {
-    if (typeName == e.first) return e.second(props);
-  }
-  std::string known;
-  for (const auto& n : available()) known += (known.empty() ? "" : ", ") + n;
-  throw InputError("voidFractionModel '" + typeName + "' unknown; expected one of: " + known);
+  return voidFractionTable().create(typeName, props);
 }
 
 }  // namespace spoutlab
