@@ -49,9 +49,19 @@ def read_function_object(case, name, filename):
 
 
 def read_coupling_log(case):
-    """postProcessing/coupling.csv written by spoutFoam, as a list of dicts."""
+    """postProcessing/coupling.csv written by spoutFoam, as a list of dicts.
+
+    A restarted run appends from its start time, which may lie before rows
+    the interrupted run had already written: a row at or before the time of
+    the rows above it replaces them (the run continued from there)."""
+    rows = []
     with open(os.path.join(case, 'postProcessing', 'coupling.csv')) as f:
-        return [{k: float(v) for k, v in row.items()} for row in csv.DictReader(f)]
+        for row in csv.DictReader(f):
+            row = {k: float(v) for k, v in row.items()}
+            while rows and rows[-1]['time [s]'] >= row['time [s]']:
+                rows.pop()
+            rows.append(row)
+    return rows
 
 
 def read_vtp_points(path):

@@ -1,0 +1,80 @@
+"""The evaluate scripts' own heat-transfer references (etc/python/
+heatcorrelations.py) and the reading of coupling.csv: hand values of the
+correlations, the energy bookkeeping on a history built to balance, and a
+restarted run's log."""
+import os
+import sys
+import tempfile
+import unittest
+
+sys.path.insert(0, os.path.join(os.path.dirname(__file__), '..', '..', 'etc', 'python'))
+import heatcorrelations as hc  # noqa: E402
+import spoutlab_case as sc  # noqa: E402
+
+# air as in the C++ hand values (tests/unit/test_HeatTransfer.cpp)
+AIR = dict(rho=1.0324, mu=2.029e-5, cp=1008.6, kappa=0.02917)
+
+
+class Correlations(unittest.TestCase):
+    def h(self, model, eps, slip):
+        return hc.heat_transfer_coefficient(model, eps, slip, 8e-3, **AIR)
+
+    def test_ranz_marshall_by_hand(self):
+        # Re = 0.95 1.0324 15 8e-3/2.029e-5 = 5800.57; Pr^(1/3) = 0.888563
+        # Nu = 2 + 0.6 0.888563 76.1615 = 42.6046; h = Nu 0.02917/8e-3 = 155.347
+        self.assertAlmostEqual(self.h('RanzMarshall', 0.95, 15.0), 155.347, delta=2e-3)
+
+    def test_sartori_vanishes_without_slip_and_ranz_marshall_does_not(self):
+        self.assertEqual(self.h('Sartori', 0.45, 0.0), 0.0)
+        self.assertAlmostEqual(self.h('RanzMarshall', 0.45, 0.0), 2 * 0.02917 / 8e-3)
+
+    def test_gunn_is_nu_2_for_a_lone_sphere_at_rest(self):
+        self.assertAlmostEqual(self.h('Gunn', 1.0, 0.0), 2 * 0.02917 / 8e-3)
+
+    def test_unknown_model(self):
+        with self.assertRaises(ValueError):
+            hc.nusselt('Nusselt', 100, 0.7, 0.5)
+
+
+def history(leak=0.0, steps=50, dt=0.01):
+    """coupling.csv rows of a run that balances: the gas takes in `net` W,
+    gives Q_k to the particles during step k + 1, and keeps the rest;
+    `leak` J per step vanishes from the gas."""
+    rows, Eg, Ep = [], 100.0, 50.0
+    for k in range(steps + 1):
+        q = 2.0 + 0.01 * k
+        if k:
+            Ep += rows[-1]['heat to particles [W]'] * dt
+            Eg += (5.0 - q) * dt - leak
+        rows.append({'time [s]': k * dt, 'heat to particles [W]': q, 'heat from gas [W]': q,
+                     'gas enthalpy in [W]': 8.0, 'gas enthalpy out [W]': 3.0,
+                     'gas energy [J]': Eg, 'particle energy [J]': Ep})
+    return rows
+
+
+class EnergyBalance(unittest.TestCase):
+    def test_a_balanced_history_closes_to_round_off(self):
+        pairwise, balance = hc.energy_balance(history())
+        self.assertEqual(pairwise, 0.0)
+        self.assertLess(balance, 1e-12)
+
+    def test_a_leak_shows_as_its_share_of_the_particles_heat(self):
+        rows = history(leak=1e-3)
+        dEp = rows[-1]['particle energy [J]'] - rows[0]['particle energy [J]']
+        _, balance = hc.energy_balance(rows)
+        self.assertAlmostEqual(balance, 50 * 1e-3 / dEp, places=9)
+
+
+class CouplingLog(unittest.TestCase):
+    def test_a_restart_replaces_the_rows_it_repeats(self):
+        case = tempfile.mkdtemp()
+        os.makedirs(os.path.join(case, 'postProcessing'))
+        with open(os.path.join(case, 'postProcessing', 'coupling.csv'), 'w') as f:
+            f.write('time [s],x\n0,1\n0.1,2\n0.2,3\n0.3,4\n0.2,5\n0.3,6\n0.4,7\n')
+        rows = sc.read_coupling_log(case)
+        self.assertEqual([(r['time [s]'], r['x']) for r in rows],
+                         [(0.0, 1.0), (0.1, 2.0), (0.2, 5.0), (0.3, 6.0), (0.4, 7.0)])
+
+
+if __name__ == '__main__':
+    unittest.main()
