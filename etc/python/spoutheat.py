@@ -174,7 +174,7 @@ def summarize(g, window, lines, case='.', pictures=True):
     lines.append('  energy: heat given by the gas = heat received by the particles to %.1e; '
                  'whole-run balance closes to %.1e of the particles\' heat' % (pairwise, balance))
     if pictures:
-        shown = [n for t, n in times[-3:]]
+        shown = [n for t, n in times if t > 0][-3:]   # 0/T is the uniform start
         lines.append('  temperature pictures: ' + ' '.join(snapshots(g, shown, case)))
     lines.append('  data: heatHistory.csv heatProfiles.csv; plots: particleTemperature.png '
                  'heatTransfer.png')
