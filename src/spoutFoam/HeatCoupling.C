@@ -88,15 +88,6 @@ Foam::IOobject scratchField(const Foam::fvMesh& mesh, const Foam::word& name)
 }
 
 
-std::unique_ptr<HeatTransferModel> makeModel
-(
-    const Foam::dictionary& couplingDict, const Foam::word& name
-)
-{
-    requireKnown("heatTransferModel", name, HeatTransferModel::available());
-    return HeatTransferModel::New(name, toParameters(couplingDict, name + "Props"));
-}
-
 const Foam::dimensionSet dimHeatPerVolume(1, -1, -3, 0, 0);            // W/m3
 const Foam::dimensionSet dimHeatPerVolumeKelvin(1, -1, -3, -1, 0);     // W/m3/K
 
@@ -118,7 +109,10 @@ HeatCoupling::HeatCoupling
     voidfraction_(voidfraction),
     phi_(phi),
     gas_(readGas(mesh, rho, mu)),
-    exchange_(makeModel(couplingDict, modelName)),
+    exchange_
+    (
+        HeatTransferModel::New(modelName, toParameters(couplingDict, modelName + "Props"))
+    ),
     T_
     (
         Foam::IOobject
