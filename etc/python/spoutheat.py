@@ -84,6 +84,39 @@ def band_profiles(g, centres, names, case='.'):
     return profile, means
 
 
+def height_profiles(g, centres, names, case='.'):
+    """Mean h per cell row (z/R_d) in the spout between the plates and in the
+    downcomer, over the cells holding particles and the write times `names`:
+    rows (z/R_d, h spout, h downcomer)."""
+    Rd = g.Wd / 2
+    sums = {}
+    for name in names:
+        h = sc.read_field(os.path.join(case, name, 'hp'))
+        re = sc.read_field(os.path.join(case, name, 'Rep'))
+        for i, (x, y, z) in enumerate(centres):
+            if re[i] <= 0 or 1000 * z >= g.Hd:
+                continue
+            acc = sums.setdefault(round(1000 * z / Rd, 3), [0.0, 0, 0.0, 0])
+            k = 0 if abs(1000 * x) <= g.Wd / 2 else 2
+            acc[k] += h[i]
+            acc[k + 1] += 1
+    nan = float('nan')
+    return [(z, a[0] / a[1] if a[1] else nan, a[2] / a[3] if a[3] else nan)
+            for z, a in sorted(sums.items())]
+
+
+def slope(rows, column, lo, hi):
+    """Least-squares d h/d(z/R_d) of one column over lo <= z/R_d <= hi."""
+    pts = [(r[0], r[column]) for r in rows if lo <= r[0] <= hi and r[column] == r[column]]
+    if len(pts) < 2:
+        return float('nan')
+    n = len(pts)
+    mz = sum(p[0] for p in pts) / n
+    mh = sum(p[1] for p in pts) / n
+    return (sum((p[0] - mz) * (p[1] - mh) for p in pts)
+            / sum((p[0] - mz) ** 2 for p in pts))
+
+
 def plot_history(rows, png):
     with open('heatHistory.csv', 'w') as f:
         f.write('time [s],mean particle temperature spout [K],'
@@ -158,11 +191,20 @@ def summarize(g, window, lines, case='.', pictures=True):
     centres = sc.read_field(os.path.join(case, '0', 'C'))
     profile, means = band_profiles(g, centres, averaged, case)
     plot_profiles(profile, 'heatTransfer.png')
+    heights = height_profiles(g, centres, averaged, case)
+    with open('heatHeight.csv', 'w') as f:
+        f.write('z/R_d,h spout [W/m2/K],h downcomer [W/m2/K]\n')
+        for r in heights:
+            f.write('%.3f,%.6g,%.6g\n' % r)
+    down = [r[2] for r in profile if not g.in_spout(r[0] * g.Wd / 2, 0.5 * sum(BAND) * g.Wd / 2)]
     out = {'Tp_spout': history[-1][1], 'Tp_downcomer': history[-1][2],
            'T_outlet': last['gas outlet temperature [K]'],
            'h_spout': means['spout'][0], 'Re_spout': means['spout'][1],
            'h_downcomer': means['downcomer'][0], 'Re_downcomer': means['downcomer'][1],
-           'balance': balance, 'pairwise': pairwise, 'samples': len(averaged)}
+           'balance': balance, 'pairwise': pairwise, 'samples': len(averaged),
+           'dh_dz_spout': slope(heights, 1, *BAND), 'dh_dz_downcomer': slope(heights, 2, *BAND),
+           'h_downcomer_spread': (max(down) - min(down)) / (sum(down) / len(down))
+           if down else float('nan')}
     lines.append('heat transfer: inlet %.1f K, start %.1f K; at t = %g s the particles '
                  'average %.2f K in the spout, %.2f K in the downcomer; gas leaves at %.2f K'
                  % (g.Tin, g.T0, last['time [s]'], out['Tp_spout'], out['Tp_downcomer'],
@@ -171,11 +213,14 @@ def summarize(g, window, lines, case='.', pictures=True):
                  'h %.1f, %.1f W/m2/K' % (BAND + (len(averaged), out['Re_spout'],
                                                   out['Re_downcomer'], out['h_spout'],
                                                   out['h_downcomer'])))
+    lines.append('  h along the band: %+.2f (spout) and %+.2f (downcomer) W/m2/K per R_d of '
+                 'height; across the downcomer h spans %.0f %% of its mean'
+                 % (out['dh_dz_spout'], out['dh_dz_downcomer'], 100 * out['h_downcomer_spread']))
     lines.append('  energy: heat given by the gas = heat received by the particles to %.1e; '
                  'whole-run balance closes to %.1e of the particles\' heat' % (pairwise, balance))
     if pictures:
         shown = [n for t, n in times if t > 0][-3:]   # 0/T is the uniform start
         lines.append('  temperature pictures: ' + ' '.join(snapshots(g, shown, case)))
-    lines.append('  data: heatHistory.csv heatProfiles.csv; plots: particleTemperature.png '
-                 'heatTransfer.png')
+    lines.append('  data: heatHistory.csv heatProfiles.csv heatHeight.csv; plots: '
+                 'particleTemperature.png heatTransfer.png')
     return out
