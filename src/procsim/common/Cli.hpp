@@ -30,7 +30,8 @@ public:
     bool isOption() const { return !arg_.empty() && arg_[0] == '-'; }
 
     std::string value();                // the option's value: the next argument
-    long positiveInteger();             // value() as a whole number > 0
+    long positiveInteger();             // value() as a whole number > 0 (within int)
+    double finiteNumber();              // value() as a finite number
 
     // "<command>: unknown option '-x' (see procsim <helpPath> --help)"
     InputError unknown(const std::string& helpPath) const;
@@ -45,8 +46,9 @@ private:
     std::string arg_;
 };
 
-// Runs a subcommand, turning InputError (and other exceptions) into one
-// line on stderr and exit status 1.
+// Runs a subcommand inside an OutputBatch (its files are put in place only
+// if it succeeds), turning InputError and any other exception into one line
+// on stderr naming the subcommand, and exit status 1.
 int runGuarded(int (*run)(int, char**), int argc, char** argv);
 
 } // namespace procsim

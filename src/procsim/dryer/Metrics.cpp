@@ -1,5 +1,7 @@
 #include "dryer/Metrics.hpp"
 
+#include "common/Checked.hpp"
+
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -197,7 +199,7 @@ BatchFile readYaml(const std::string& path)
 
 BatchFile readCsvFile(const std::string& path)
 {
-    const CsvTable t = readCsv(path);
+    const CsvTable t = readCsv(path, true);   // "nan" = not given
     auto col = [&](const std::string& name) -> long {
         for (std::size_t i = 0; i < t.header.size(); ++i)
             if (t.header[i] == name) return static_cast<long>(i);
@@ -253,8 +255,11 @@ BatchFile readCsvFile(const std::string& path)
 
 BatchFile readBatchFile(const std::string& path)
 {
-    if (endsWith(path, ".csv")) return readCsvFile(path);
-    return readYaml(path);
+    BatchFile f = endsWith(path, ".csv") ? readCsvFile(path) : readYaml(path);
+    std::vector<std::string> ids;
+    for (const auto& b : f.batches) ids.push_back(b.id);
+    rejectDuplicates(ids, path, "batch id");
+    return f;
 }
 
 } // namespace procsim::dryer

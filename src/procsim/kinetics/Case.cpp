@@ -1,5 +1,7 @@
 #include "kinetics/Case.hpp"
 
+#include "common/Checked.hpp"
+
 #include <cmath>
 #include <filesystem>
 #include <sstream>
@@ -83,16 +85,9 @@ SweepDim parseSweep(const std::string& arg)
     std::string v;
     while (std::getline(ss, v, ','))
     {
-        try
-        {
-            std::size_t used = 0;
-            d.values.push_back(std::stod(v, &used));
-            if (used != v.size()) throw std::invalid_argument(v);
-        }
-        catch (const std::exception&)
-        {
-            throw InputError("--sweep " + d.key + ": expected numbers separated by commas, got '" + v + "'");
-        }
+        const auto x = parseFinite(v);
+        if (!x) throw InputError("--sweep " + d.key + ": expected finite numbers separated by commas, got '" + v + "'");
+        d.values.push_back(*x);
     }
     if (d.values.empty()) throw InputError("--sweep " + d.key + ": no values given");
     return d;

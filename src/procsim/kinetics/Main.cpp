@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "common/Checked.hpp"
 #include "common/Cli.hpp"
 #include "kinetics/Case.hpp"
 #include "kinetics/Corona.hpp"
@@ -170,16 +171,8 @@ struct Args
 
 double parseNumber(const std::string& opt, const std::string& v)
 {
-    try
-    {
-        std::size_t used = 0;
-        const double x = std::stod(v, &used);
-        if (used == v.size()) return x;
-    }
-    catch (const std::exception&)
-    {
-    }
-    throw InputError(opt + " expected a number, got '" + v + "'");
+    if (const auto x = parseFinite(v)) return *x;
+    throw InputError(opt + " expected a finite number, got '" + v + "'");
 }
 
 std::vector<std::string> splitCommas(const std::string& s)
@@ -336,7 +329,7 @@ int main(int argc, char** argv)
         if (help || argc == 2) return std::cout << coronaHelp(), help ? 0 : 2;
         return coronaMain(argc, argv);
     }
-    std::cerr << "procsim kinetics: unknown command '" << cmd << "'\n" << mainHelp;
+    std::cerr << "procsim: kinetics: unknown command '" << cmd << "' (see procsim kinetics --help)\n";
     return 2;
 }
 

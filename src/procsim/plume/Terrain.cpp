@@ -5,8 +5,10 @@
 #include <cmath>
 #include <fstream>
 #include <iomanip>
+#include <set>
 #include <sstream>
 
+#include "common/Checked.hpp"
 #include "common/Cli.hpp"
 
 namespace procsim::plume
@@ -50,6 +52,7 @@ EsriGrid readEsriGrid(const std::string& path)
     double nodata = -9999;
     bool centre = false;
     bool haveX = false, haveY = false, haveCell = false;
+    std::set<std::string> seenKeys;
     std::string line;
     int lineNo = 0;
     std::streampos dataStart = in.tellg();
@@ -69,15 +72,30 @@ EsriGrid readEsriGrid(const std::string& path)
             dataLine = lineNo;
             break;
         }
-        double value;
-        if (!(ss >> value))
+        std::string text, extra;
+        ss >> text;
+        const auto parsed = parseFinite(text);
+        if (!parsed || (ss >> extra))
         {
             throw InputError(path + ": line " + std::to_string(lineNo) + ": header key '" + key
-                             + "' expected a number");
+                             + "' expected a finite number, got '" + text + (extra.empty() ? "" : " " + extra) + "'");
         }
+        const double value = *parsed;
         const std::string k = lower(key);
-        if (k == "ncols") g.ncols = static_cast<int>(value);
-        else if (k == "nrows") g.nrows = static_cast<int>(value);
+        if (!seenKeys.insert(k).second)
+        {
+            throw InputError(path + ": line " + std::to_string(lineNo) + ": header key '" + key + "' is given twice");
+        }
+        if (k == "ncols" || k == "nrows")
+        {
+            const auto n = parseInteger(text, 2, 100000);
+            if (!n)
+            {
+                throw InputError(path + ": line " + std::to_string(lineNo) + ": header key '" + key
+                                 + "' expected a whole number from 2 to 100000, got '" + text + "'");
+            }
+            (k == "ncols" ? g.ncols : g.nrows) = static_cast<int>(*n);
+        }
         else if (k == "xllcorner") { g.xll = value; haveX = true; }
         else if (k == "yllcorner") { g.yll = value; haveY = true; }
         else if (k == "xllcenter") { g.xll = value; haveX = true; centre = true; }
@@ -102,6 +120,8 @@ EsriGrid readEsriGrid(const std::string& path)
     }
     if (dataLine == 0) throw InputError(path + ": no elevation rows after the header");
 
+    checkMemory(static_cast<double>(g.ncols) * g.nrows, 2 * sizeof(double), path, "a terrain grid of "
+                + std::to_string(g.ncols) + " x " + std::to_string(g.nrows) + " cells");
     in.clear();
     in.seekg(dataStart);
     lineNo = dataLine - 1;
@@ -118,13 +138,13 @@ EsriGrid readEsriGrid(const std::string& path)
         while (ss >> tok)
         {
             any = true;
-            char* end = nullptr;
-            const double v = std::strtod(tok.c_str(), &end);
-            if (end == tok.c_str() || *end != '\0' || !std::isfinite(v))
+            const auto parsed = parseFinite(tok);
+            if (!parsed)
             {
                 throw InputError(path + ": line " + std::to_string(lineNo)
-                                 + ": expected an elevation [m], got '" + tok + "'");
+                                 + ": expected a finite elevation [m], got '" + tok + "'");
             }
+            const double v = *parsed;
             if (haveNodata && v == nodata)
             {
                 throw InputError(path + ": line " + std::to_string(lineNo)
