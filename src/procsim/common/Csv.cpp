@@ -1,5 +1,6 @@
 #include "common/Csv.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iomanip>
@@ -105,6 +106,10 @@ void OutputBatch::stage(const std::string& tmp, const std::string& path)
     std::unique_lock<std::mutex> lock(batchMutex);
     if (current)
     {
+        for (const auto& staged : current->staged)
+        {
+            if (staged.second == path) throw InputError(path + ": would be written twice by one run (two equal names?)");
+        }
         current->staged.emplace_back(tmp, path);
         return;
     }
@@ -157,7 +162,8 @@ void writeTextFile(const std::string& path, const std::string& text)
     f.close();
 }
 
-CsvWriter::CsvWriter(const std::string& path, const std::vector<std::string>& header) : file_(path)
+CsvWriter::CsvWriter(const std::string& path, const std::vector<std::string>& header)
+    : file_(path), header_(header)
 {
     file_.out() << std::setprecision(10);
     row(header);
@@ -165,6 +171,15 @@ CsvWriter::CsvWriter(const std::string& path, const std::vector<std::string>& he
 
 void CsvWriter::row(const std::vector<double>& values)
 {
+    // nan may stand for "not available"; an infinity is always an input out of range
+    for (std::size_t i = 0; i < values.size(); ++i)
+    {
+        if (std::isinf(values[i]))
+        {
+            throw InputError(file_.path() + ": column '" + (i < header_.size() ? header_[i] : std::to_string(i + 1))
+                             + "' would hold an infinite result (an input far out of range?)");
+        }
+    }
     std::ostream& out = file_.out();
     for (std::size_t i = 0; i < values.size(); ++i) out << (i ? "," : "") << values[i];
     out << '\n';

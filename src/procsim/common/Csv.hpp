@@ -55,7 +55,9 @@ private:
 // Write a whole small text file through OutputFile.
 void writeTextFile(const std::string& path, const std::string& text);
 
-// CSV output: a header row with units in the column names, then rows.
+// CSV output: a header row with units in the column names, then rows.  A
+// numeric row holding an infinity is refused (InputError): no result file
+// ever shows inf.
 class CsvWriter
 {
 public:
@@ -67,6 +69,7 @@ public:
 
 private:
     OutputFile file_;
+    std::vector<std::string> header_;
 };
 
 // Read a CSV with a header row: column names and numeric rows.  Every cell

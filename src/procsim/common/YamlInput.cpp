@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "common/Checked.hpp"
+#include "common/Csv.hpp"
 
 namespace procsim
 {
@@ -178,6 +179,22 @@ double YamlInput::nonNegative(const std::string& key, const std::string& unit) c
     const double v = number(key, unit);
     if (!(v >= 0)) throw error(key, withUnit("a number >= 0", unit));
     return v;
+}
+
+double YamlInput::within(const std::string& key, double lo, double hi, const std::string& unit) const
+{
+    const double v = number(key, unit);
+    if (!(v >= lo && v <= hi))
+    {
+        throw error(key, withUnit("a number from " + formatNumber(lo) + " to " + formatNumber(hi), unit));
+    }
+    return v;
+}
+
+double YamlInput::within(const std::string& key, double fallback, double lo, double hi,
+                         const std::string& unit) const
+{
+    return has(key) ? within(key, lo, hi, unit) : fallback;
 }
 
 long YamlInput::integer(const std::string& key) const

@@ -8,6 +8,7 @@
 #include <set>
 #include <sstream>
 
+#include "common/Csv.hpp"
 #include "common/Checked.hpp"
 #include "common/Cli.hpp"
 
@@ -112,7 +113,9 @@ EsriGrid readEsriGrid(const std::string& path)
     if (g.ncols < 2 || g.nrows < 2)
         throw InputError(path + ": header expected ncols and nrows >= 2 (ESRI ASCII grid)");
     if (!haveX || !haveY) throw InputError(path + ": header expected xllcorner and yllcorner");
-    if (!haveCell || !(g.cell > 0)) throw InputError(path + ": header expected cellsize > 0");
+    if (!haveCell || !(g.cell > 0 && g.cell <= 1e5)) throw InputError(path + ": header expected cellsize > 0 and up to 1e5 m");
+    if (!(std::fabs(g.xll) <= 1e7 && std::fabs(g.yll) <= 1e7))
+        throw InputError(path + ": header expected xllcorner and yllcorner within 1e7 m of the origin");
     if (centre)
     {
         g.xll -= 0.5 * g.cell;
@@ -139,10 +142,11 @@ EsriGrid readEsriGrid(const std::string& path)
         {
             any = true;
             const auto parsed = parseFinite(tok);
-            if (!parsed)
+            const bool nodataCell = parsed && haveNodata && *parsed == nodata;
+            if (!parsed || (!nodataCell && !(*parsed >= -1000 && *parsed <= 10000)))
             {
                 throw InputError(path + ": line " + std::to_string(lineNo)
-                                 + ": expected a finite elevation [m], got '" + tok + "'");
+                                 + ": expected an elevation from -1000 to 10000 m, got '" + tok + "'");
             }
             const double v = *parsed;
             if (haveNodata && v == nodata)
@@ -180,8 +184,8 @@ EsriGrid readEsriGrid(const std::string& path)
 
 void writeEsriGrid(const std::string& path, const EsriGrid& g)
 {
-    std::ofstream out(path);
-    if (!out) throw InputError(path + ": cannot be written");
+    OutputFile file(path);
+    std::ostream& out = file.out();
     out << "ncols " << g.ncols << "\nnrows " << g.nrows << "\nxllcorner " << g.xll
         << "\nyllcorner " << g.yll << "\ncellsize " << g.cell << "\nNODATA_value -9999\n";
     out << std::fixed << std::setprecision(2);
@@ -190,6 +194,7 @@ void writeEsriGrid(const std::string& path, const EsriGrid& g)
         for (int c = 0; c < g.ncols; ++c) out << (c ? " " : "") << g.at(c, r);
         out << '\n';
     }
+    file.close();
 }
 
 } // namespace procsim::plume
