@@ -5,6 +5,7 @@
 #include <iomanip>
 #include <sstream>
 
+#include "common/Checked.hpp"
 #include "common/Csv.hpp"
 #include "common/Cli.hpp"
 #include "common/YamlInput.hpp"
@@ -309,6 +310,7 @@ Plant readPlant(const std::string& path)
                          "initial_moisture_spread_percent", "pattern_seed", "measured", "note"});
         BatchSpec s;
         s.id = b.text("id");
+        checkFileNamePart(s.id, b.file() + ": key '" + b.path() + ".id'");   // names the batch's result files
         s.venting = b.text("venting");
         if (!p.venting.count(s.venting))
             throw b.error("venting", "the name of an arrangement under 'venting'");
@@ -351,6 +353,9 @@ Plant readPlant(const std::string& path)
         p.batches.push_back(s);
     }
     if (p.batches.empty()) throw in.error("batches", "a non-empty list of batches");
+    std::vector<std::string> ids;
+    for (const auto& batch : p.batches) ids.push_back(batch.id);
+    rejectDuplicates(ids, in.file() + ": key 'batches'", "batch id");
 
     if (in.has("calibration"))
     {

@@ -258,8 +258,8 @@ Case CaseSource::build(const Overrides& overrides) const
         if (time.has(a) && time.has(b))
             throw InputError(file_ + ": keys 'time." + a + "' and 'time." + b + "' both given (expected one of them)");
     }
-    if (time.has("duration_h")) c.duration = 3600.0 * time.positive("duration_h", "h");
-    else if (time.has("duration_s")) c.duration = time.positive("duration_s", "s");
+    if (time.has("duration_h")) c.duration = 3600.0 * time.within("duration_h", 1e-9, 1e9, "h");
+    else if (time.has("duration_s")) c.duration = time.within("duration_s", 1e-9, 3.6e12, "s");
     else throw time.error("duration_h", "a positive number [h] (or duration_s)");
     if (time.has("output_interval_min")) c.outputInterval = 60.0 * time.positive("output_interval_min", "min");
     else if (time.has("output_interval_s")) c.outputInterval = time.positive("output_interval_s", "s");
