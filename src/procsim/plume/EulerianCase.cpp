@@ -330,7 +330,7 @@ ScenarioResult runScenario(const EulerianCase& cs, const TerrainGrid& g, const W
         const double limit = t.stableDt();
         const double dt0 = cs.dt > 0 ? cs.dt : cs.cflFraction * limit;
         const long n = stepCount(3600.0, dt0, maxStepsPerHour, cs.file + ": key 'time.dt_s'",
-                                 "an hour in steps of " + fmt(dt0, 3) + " s", "use a larger dt_s or 'auto'");
+                                 "an hour in steps of " + formatNumber(dt0, 3) + " s", "use a larger dt_s or 'auto'");
         const double dt = 3600.0 / n;
         res.dtMin = std::min(res.dtMin, dt);
         res.dtMax = std::max(res.dtMax, dt);
@@ -572,7 +572,7 @@ int eulerianMain(int argc, char** argv)
     // the work the run needs: refuse what would not finish in reasonable time
     const double dtRun = cs.dt > 0 ? cs.dt : cs.cflFraction * limit;
     const long perHour = stepCount(3600.0, dtRun, maxStepsPerHour, cs.file + ": key 'time.dt_s'",
-                                   "an hour in steps of " + fmt(dtRun, 3) + " s", "use a larger dt_s or 'auto'");
+                                   "an hour in steps of " + formatNumber(dtRun, 3) + " s", "use a larger dt_s or 'auto'");
     const double updates = static_cast<double>(g.nx) * g.ny * g.nz * perHour * hours * cs.scenarios.size();
     if (updates > maxCellUpdates)
     {
