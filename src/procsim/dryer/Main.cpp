@@ -877,7 +877,7 @@ int main(int argc, char** argv)
     if (cmd == "simulate") return runSimulate(argc - 1, argv + 1);
     if (cmd == "calibrate") return runCalibrate(argc - 1, argv + 1);
     if (cmd == "whatif") return runWhatif(argc - 1, argv + 1);
-    throw InputError("dryer: unknown command '" + cmd + "' (metrics, psychro, simulate, calibrate, whatif)");
+    throw InputError("dryer: unknown command '" + cmd + "' (metrics, psychro, simulate, calibrate, whatif; see procsim dryer --help)");
 }
 
 } // namespace procsim::dryer
