@@ -37,4 +37,14 @@ void checkFileNamePart(const std::string& name, const std::string& where);
 void rejectDuplicates(const std::vector<std::string>& names, const std::string& where,
                       const std::string& what);
 
+// The same for the member `name` of each item, e.g. (receptors, &Receptor::name, ...).
+template <class T>
+void rejectDuplicates(const std::vector<T>& items, std::string T::*name, const std::string& where,
+                      const std::string& what)
+{
+    std::vector<std::string> names;
+    for (const auto& item : items) names.push_back(item.*name);
+    rejectDuplicates(names, where, what);
+}
+
 } // namespace procsim

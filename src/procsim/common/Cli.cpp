@@ -1,13 +1,13 @@
 #include "common/Cli.hpp"
 
-#include "common/Checked.hpp"
-#include "common/Csv.hpp"
-
 #include <exception>
 #include <filesystem>
-#include <new>
 #include <iostream>
+#include <new>
 #include <utility>
+
+#include "common/Checked.hpp"
+#include "common/Csv.hpp"
 
 namespace procsim
 {

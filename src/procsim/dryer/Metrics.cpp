@@ -1,11 +1,10 @@
 #include "dryer/Metrics.hpp"
 
-#include "common/Checked.hpp"
-
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
 
+#include "common/Checked.hpp"
 #include "common/Cli.hpp"
 #include "common/Csv.hpp"
 #include "common/YamlInput.hpp"
@@ -277,9 +276,7 @@ BatchFile readCsvFile(const std::string& path)
 BatchFile readBatchFile(const std::string& path)
 {
     BatchFile f = endsWith(path, ".csv") ? readCsvFile(path) : readYaml(path);
-    std::vector<std::string> ids;
-    for (const auto& b : f.batches) ids.push_back(b.id);
-    rejectDuplicates(ids, path, "batch id");
+    rejectDuplicates(f.batches, &BatchRecord::id, path, "batch id");
     return f;
 }
 

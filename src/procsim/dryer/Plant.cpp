@@ -1,13 +1,12 @@
 #include "dryer/Plant.hpp"
 
 #include <cmath>
-#include <fstream>
 #include <iomanip>
 #include <sstream>
 
 #include "common/Checked.hpp"
-#include "common/Csv.hpp"
 #include "common/Cli.hpp"
+#include "common/Csv.hpp"
 #include "common/YamlInput.hpp"
 #include "dryer/Metrics.hpp"
 #include "dryer/Psychrometrics.hpp"
@@ -353,9 +352,7 @@ Plant readPlant(const std::string& path)
         p.batches.push_back(s);
     }
     if (p.batches.empty()) throw in.error("batches", "a non-empty list of batches");
-    std::vector<std::string> ids;
-    for (const auto& batch : p.batches) ids.push_back(batch.id);
-    rejectDuplicates(ids, in.file() + ": key 'batches'", "batch id");
+    rejectDuplicates(p.batches, &BatchSpec::id, in.file() + ": key 'batches'", "batch id");
 
     if (in.has("calibration"))
     {

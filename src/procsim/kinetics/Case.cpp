@@ -1,11 +1,11 @@
 #include "kinetics/Case.hpp"
 
-#include "common/Checked.hpp"
-#include "common/Csv.hpp"
-
 #include <cmath>
 #include <filesystem>
 #include <sstream>
+
+#include "common/Checked.hpp"
+#include "common/Csv.hpp"
 
 namespace procsim::kinetics
 {

@@ -1,13 +1,13 @@
 #include "common/Cvode.hpp"
 #include "kinetics/Solvers.hpp"
 
-#include "common/Checked.hpp"
-#include "common/Csv.hpp"
-
 #include <cmath>
 #include <map>
 #include <stdexcept>
 #include <unsupported/Eigen/MatrixFunctions>
+
+#include "common/Checked.hpp"
+#include "common/Csv.hpp"
 
 
 namespace procsim::kinetics

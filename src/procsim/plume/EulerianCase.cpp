@@ -197,9 +197,7 @@ EulerianCase loadEulerianCase(const std::string& path)
         }
     }
     if (c.scenarios.empty()) c.scenarios.push_back({"base", kH, kV, 0.0});
-    std::vector<std::string> names;
-    for (const auto& sc : c.scenarios) names.push_back(sc.name);
-    rejectDuplicates(names, path + ": key 'scenarios'", "scenario name");
+    rejectDuplicates(c.scenarios, &Scenario::name, path + ": key 'scenarios'", "scenario name");
     return c;
 }
 

@@ -78,9 +78,7 @@ std::vector<Source> parseSources(const YamlInput& list)
         out.push_back(s);
     }
     if (out.empty()) throw InputError(list.file() + ": key '" + list.path() + "' expected at least one source");
-    std::vector<std::string> names;
-    for (const auto& s : out) names.push_back(s.name);
-    rejectDuplicates(names, list.file() + ": key '" + list.path() + "'", "source name");
+    rejectDuplicates(out, &Source::name, list.file() + ": key '" + list.path() + "'", "source name");
     return out;
 }
 
@@ -99,9 +97,7 @@ std::vector<Receptor> parseReceptors(const YamlInput& list)
         r.height = it.within("height_m", 0.0, 0, maxHeight, "m");
         out.push_back(r);
     }
-    std::vector<std::string> names;
-    for (const auto& r : out) names.push_back(r.name);
-    rejectDuplicates(names, list.file() + ": key '" + list.path() + "'", "receptor name");
+    rejectDuplicates(out, &Receptor::name, list.file() + ": key '" + list.path() + "'", "receptor name");
     if (out.empty()) throw InputError(list.file() + ": key '" + list.path() + "' expected at least one receptor");
     return out;
 }

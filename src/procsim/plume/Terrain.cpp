@@ -8,9 +8,9 @@
 #include <set>
 #include <sstream>
 
-#include "common/Csv.hpp"
 #include "common/Checked.hpp"
 #include "common/Cli.hpp"
+#include "common/Csv.hpp"
 
 namespace procsim::plume
 {

@@ -1,11 +1,10 @@
 #include "plume/Vtk.hpp"
 
 #include <algorithm>
-#include <fstream>
 #include <iomanip>
 
-#include "common/Csv.hpp"
 #include "common/Cli.hpp"
+#include "common/Csv.hpp"
 #include "plume/Eulerian.hpp"
 
 namespace procsim::plume
