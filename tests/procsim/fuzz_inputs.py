@@ -4,7 +4,9 @@
 Each mutation changes one shipped input of process_cases/ (a number made
 non-finite, huge, negative, zero or text; a key duplicated or deleted; a list
 item duplicated; a name made unusable as a file name; a CSV cell made bad or
-given trailing text; a CSV row duplicated or deleted) and runs procsim on it
+given trailing text; a CSV row duplicated or deleted) or, for one in five, the
+command line (a bad option value, an option given twice, an unknown option, a
+second input, a bad sweep or sensitivity option) and runs procsim on it
 in a scratch copy whose output directory already holds marker files in place
 of the results.  Every run must either
 
@@ -177,6 +179,38 @@ def mutate_table(text, rng, sep):
     return "\n".join(lines), "header line %d -> '%s'" % (i + 1, lines[i])
 
 
+BAD_OPTIONS = ["0", "-1", "inf", "nan", "1e308", "abc", "1.5", "2147483648", "99999999999", ""]
+EXTRA_OPTIONS = {
+    "run": [["--sweep", "I=0.1,nan"], ["--sweep", "I=0.2,0.2"], ["--sweep", "I=0.1,0.3,1e308"],
+            ["--sweep", "k.k1=-1"], ["--set", "I=inf"], ["--set", "time.duration_h=1e308"],
+            ["--solver", "euler"], ["--sweep", "I=0.1", "--sweep", "V=9", "--sweep", "I=0.3"]],
+    "sensitivity": [["--time-h", v] for v in ("0", "-1", "100", "inf", "5abc")]
+                   + [["--change-percent", v] for v in ("0", "-10", "100", "nan")],
+}
+
+
+def mutate_args(args, rng):
+    """A bad command line: an option value, a repeated option, an extra word."""
+    args = list(args)
+    valued = [i for i, a in enumerate(args[:-1])
+              if a.startswith("-") and a not in ("-o", "--out") and not args[i + 1].startswith("-")]
+    kind = rng.choice(["value", "twice", "unknown", "extra", "model"])
+    if kind == "value" and valued:
+        i = rng.choice(valued)
+        args[i + 1] = rng.choice(BAD_OPTIONS)
+        return args, "option %s %s" % (args[i], args[i + 1])
+    if kind == "twice":
+        i = rng.choice([i for i, a in enumerate(args) if a.startswith("-")])
+        pair = args[i:i + 2] if i + 1 < len(args) and not args[i + 1].startswith("-") else args[i:i + 1]
+        return args + pair, "option %s given twice" % args[i]
+    if kind == "unknown":
+        return args + ["--bogus"], "unknown option"
+    if kind == "model" and args[1] in EXTRA_OPTIONS:
+        extra = rng.choice(EXTRA_OPTIONS[args[1]])
+        return args + extra, "options %s" % " ".join(extra)
+    return args + ["{d}/extra.yaml"], "a second input file"
+
+
 def mutate(path, rng):
     with open(path) as f:
         text = f.read()
@@ -262,8 +296,12 @@ def main():
         scratch = os.path.join(a.work, "m%d" % n)
         case_dir = os.path.join(scratch, model)
         shutil.copytree(os.path.join(a.cases, model), case_dir)
-        target_file = rng.choice(mutable)
-        what = target_file + ": " + mutate(os.path.join(case_dir, target_file), rng)
+        if rng.random() < 0.2:
+            args, what = mutate_args(args, rng)
+            what = "command line: " + what
+        else:
+            target_file = rng.choice(mutable)
+            what = target_file + ": " + mutate(os.path.join(case_dir, target_file), rng)
         out = os.path.join(scratch, "out")
         for rel in baseline[t][0]:
             os.makedirs(os.path.dirname(os.path.join(out, rel)), exist_ok=True)

@@ -35,6 +35,10 @@ std::string ArgReader::value()
     {
         throw InputError(command_ + ": option " + arg_ + " expects a value");
     }
+    if (!given_.insert(arg_).second)   // a second value would silently replace the first
+    {
+        throw InputError(command_ + ": option " + arg_ + " given twice");
+    }
     return argv_[++index_];
 }
 

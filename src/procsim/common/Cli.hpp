@@ -1,5 +1,6 @@
 #pragma once
 // Command-line conventions shared by every procsim subcommand.
+#include <set>
 #include <stdexcept>
 #include <string>
 
@@ -29,7 +30,7 @@ public:
     const std::string& arg() const { return arg_; }
     bool isOption() const { return !arg_.empty() && arg_[0] == '-'; }
 
-    std::string value();                // the option's value: the next argument
+    std::string value();                // the option's value: the next argument (once per option)
     long positiveInteger();             // value() as a whole number > 0 (within int)
     double finiteNumber();              // value() as a finite number
 
@@ -44,6 +45,7 @@ private:
     char** argv_;
     int index_ = 0;
     std::string arg_;
+    std::set<std::string> given_;
 };
 
 // Runs a subcommand inside an OutputBatch (its files are put in place only

@@ -318,6 +318,7 @@ Case CaseSource::build(const Overrides& overrides) const
             c.sweep.push_back(s);
         }
         if (c.sweep.size() > 2) throw InputError(file_ + ": key 'sweep' expected at most two swept keys");
+        rejectDuplicates(c.sweep, &SweepDim::key, file_ + ": key 'sweep'", "swept key");
     }
     if (in.has("sensitivity"))
     {

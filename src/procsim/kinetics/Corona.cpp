@@ -96,6 +96,7 @@ int coronaMain(int argc, char** argv)
         if (s == "-o" || s == "--output")
         {
             if (i + 1 >= argc) throw InputError("kinetics corona: -o needs a directory");
+            if (!dir.empty()) throw InputError("kinetics corona: option -o given twice");
             dir = argv[++i];
         }
         else if (!s.empty() && s[0] == '-') throw InputError("kinetics corona: unknown option '" + s + "'");

@@ -240,6 +240,7 @@ int fitMain(int argc, char** argv)
         if (s == "-o" || s == "--output")
         {
             if (i + 1 >= argc) throw InputError("kinetics fit: -o needs a directory");
+            if (!dir.empty()) throw InputError("kinetics fit: option -o given twice");
             dir = argv[++i];
         }
         else if (s == "--no-plots") plots = false;

@@ -238,6 +238,10 @@ Args parseArgs(int argc, char** argv, const std::string& cmd)
     }
     if (a.positional.size() != 1)
         throw InputError("kinetics " + cmd + ": expected one input file (see procsim kinetics " + cmd + " --help)");
+    std::vector<std::string> setKeys;
+    for (const auto& kv : a.set) setKeys.push_back(kv.first);
+    rejectDuplicates(setKeys, "kinetics " + cmd, "--set key");
+    rejectDuplicates(a.sweeps, &SweepDim::key, "kinetics " + cmd, "--sweep key");
     return a;
 }
 

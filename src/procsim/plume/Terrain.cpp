@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <set>
@@ -45,6 +46,8 @@ std::string lower(std::string s)
 
 EsriGrid readEsriGrid(const std::string& path)
 {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) throw InputError(path + ": is a directory, expected a terrain grid file");
     std::ifstream in(path);
     if (!in) throw InputError(path + ": cannot be read (missing terrain file?)");
 
