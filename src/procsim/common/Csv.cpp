@@ -26,7 +26,7 @@ struct Batch
 };
 
 std::mutex batchMutex;
-Batch* current = nullptr;
+std::unique_ptr<Batch> current;   // the open batch (one at a time: main's)
 
 void putInPlace(const std::string& tmp, const std::string& path)
 {
@@ -59,7 +59,7 @@ std::string formatNumber(double v, int significant)
 OutputBatch::OutputBatch()
 {
     std::lock_guard<std::mutex> lock(batchMutex);
-    current = new Batch;
+    current = std::make_unique<Batch>();
 }
 
 OutputBatch::~OutputBatch()
@@ -67,19 +67,17 @@ OutputBatch::~OutputBatch()
     std::lock_guard<std::mutex> lock(batchMutex);
     if (!current) return;
     for (const auto& [tmp, path] : current->staged) std::remove(tmp.c_str());
-    delete current;
-    current = nullptr;
+    current.reset();
 }
 
 void OutputBatch::commit()
 {
-    Batch* b = nullptr;
+    std::unique_ptr<Batch> b;
     {
         std::lock_guard<std::mutex> lock(batchMutex);
-        std::swap(b, current);
+        b = std::move(current);
     }
     if (!b) return;
-    std::unique_ptr<Batch> owned(b);
     for (std::size_t i = 0; i < b->staged.size(); ++i)
     {
         try

@@ -14,6 +14,16 @@ constexpr double maxHeight = 1e4;       // m above the ground
 constexpr double maxSize = 1e5;         // m: a 100 km source
 constexpr double maxRate = 1e9;         // g/s
 
+// size_m: [east-west, north-south] of an area or volume source
+void readSize(const YamlInput& it, Source& s)
+{
+    const auto size = it.numbers("size_m", "m");
+    if (size.size() != 2 || !(size[0] > 0 && size[0] <= maxSize) || !(size[1] > 0 && size[1] <= maxSize))
+        throw it.error("size_m", "two positive numbers up to 1e5 [m] (east-west, north-south)");
+    s.lx = size[0];
+    s.ly = size[1];
+}
+
 } // namespace
 
 std::vector<Source> parseSources(const YamlInput& list)
@@ -49,22 +59,14 @@ std::vector<Source> parseSources(const YamlInput& list)
         {
             it.rejectUnknown({"name", "type", "x_m", "y_m", "size_m", "height_m", "rate_g_s", "controlled"});
             s.type = Source::Type::Area;
-            const auto size = it.numbers("size_m", "m");
-            if (size.size() != 2 || !(size[0] > 0 && size[0] <= maxSize) || !(size[1] > 0 && size[1] <= maxSize))
-                throw it.error("size_m", "two positive numbers up to 1e5 [m] (east-west, north-south)");
-            s.lx = size[0];
-            s.ly = size[1];
+            readSize(it, s);
             s.height = it.within("height_m", 0.0, 0, maxHeight, "m");
         }
         else if (type == "volume")
         {
             it.rejectUnknown({"name", "type", "x_m", "y_m", "size_m", "bottom_m", "top_m", "rate_g_s", "controlled"});
             s.type = Source::Type::Volume;
-            const auto size = it.numbers("size_m", "m");
-            if (size.size() != 2 || !(size[0] > 0 && size[0] <= maxSize) || !(size[1] > 0 && size[1] <= maxSize))
-                throw it.error("size_m", "two positive numbers up to 1e5 [m] (east-west, north-south)");
-            s.lx = size[0];
-            s.ly = size[1];
+            readSize(it, s);
             s.bottom = it.within("bottom_m", 0.0, 0, maxHeight, "m");
             s.top = it.within("top_m", 0, maxHeight, "m");
             if (!(s.bottom >= 0 && s.top > s.bottom))
