@@ -26,7 +26,7 @@ std::vector<double> positiveList(const YamlInput& in, const std::string& key, st
     if (v.size() != size)
         throw in.error(key, "a list of " + std::to_string(size) + " " + what);
     for (double x : v)
-        if (!(x > 0 && x <= 100)) throw in.error(key, "positive relative air shares up to 100");
+        if (!(x >= 0.01 && x <= 100)) throw in.error(key, "relative air shares from 0.01 to 100");
     return v;
 }
 
@@ -157,6 +157,26 @@ std::string knownParameter(const Plant& p, const YamlInput& f)
     return name;
 }
 
+// The values a fitted or held parameter may take: those its plant key accepts.
+std::pair<double, double> parameterRange(const std::string& name)
+{
+    if (name == "heat_transfer_coefficient_W_per_m2K") return {1e-6, 1e5};
+    if (name == "falling_rate_exponent") return {1e-6, 100};
+    if (name == "rate_constant_per_h") return {1e-9, 1e6};
+    if (name == "activation_energy_kJ_per_mol") return {0, 1e4};
+    if (name == "critical_moisture_percent_db") return {1e-6, 1e4};
+    if (name == "oswin_A_percent_db") return {0, 1e4};
+    if (name == "wall_UA_W_per_K") return {0, 1e8};
+    return {0, 1};   // the vented and short-circuit fractions
+}
+
+void checkParameterValue(const YamlInput& f, const std::string& key, const std::string& name, double v)
+{
+    const auto [lo, hi] = parameterRange(name);
+    if (!(v >= lo && v <= hi))
+        throw f.error(key, "values of " + name + " from " + formatNumber(lo) + " to " + formatNumber(hi));
+}
+
 void readProfile(const YamlInput& pr, Plant& p)
 {
     pr.rejectUnknown({"hold", "time_tolerance_percent", "electricity_tolerance_percent"});
@@ -167,6 +187,7 @@ void readProfile(const YamlInput& pr, Plant& p)
         axis.name = knownParameter(p, h);
         axis.values = h.numbers("values");
         if (axis.values.empty()) throw h.error("values", "a non-empty list of values");
+        for (double v : axis.values) checkParameterValue(h, "values", axis.name, v);
         for (const auto& other : p.profile)
             if (other.name == axis.name) throw h.error("parameter", "each parameter held once");
         p.profile.push_back(axis);
@@ -365,6 +386,8 @@ Plant readPlant(const std::string& path)
             fp.name = knownParameter(p, f);
             fp.lower = f.number("lower");
             fp.upper = f.number("upper");
+            checkParameterValue(f, "lower", fp.name, fp.lower);
+            checkParameterValue(f, "upper", fp.name, fp.upper);
             if (!(fp.lower < fp.upper)) throw f.error("upper", "a value above 'lower'");
             p.fit.push_back(fp);
         }

@@ -10,6 +10,7 @@
 #include <set>
 #include <sstream>
 
+#include "common/Ceres.hpp"
 #include "common/Csv.hpp"
 #include "common/Plot.hpp"
 #include "kinetics/Run.hpp"
@@ -134,6 +135,7 @@ FitResult fitParameters(std::vector<FitParameter> params, const std::vector<FitD
     so.gradient_tolerance = 1e-14;
     so.logging_type = ceres::SILENT;
     ceres::Solver::Summary summary;
+    quietCeres();
     ceres::Solve(so, &problem, &summary);
 
     FitResult r;
