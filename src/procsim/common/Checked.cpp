@@ -1,13 +1,13 @@
 #include "common/Checked.hpp"
 
-#include <cerrno>
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <set>
-#include <sstream>
 
 #include "common/Cli.hpp"
+#include "common/Csv.hpp"
 
 namespace procsim
 {
@@ -23,13 +23,7 @@ std::string trimmed(const std::string& text)
     return text.substr(b, e - b + 1);
 }
 
-std::string approx(double v)
-{
-    std::ostringstream os;
-    os.precision(3);
-    os << v;
-    return os.str();
-}
+std::string approx(double v) { return formatNumber(v, 3); }
 
 constexpr double maxBytes = 8e9;   // refuse runs that would need more memory than this
 
