@@ -67,7 +67,6 @@ int main(int argc, char** argv)
             return procsim::runGuarded(c.run, argc - 1, argv + 1);
         }
     }
-    std::cerr << "procsim: unknown command '" << argv[1] << "'\n";
-    usage(std::cerr);
+    std::cerr << "procsim: unknown command '" << argv[1] << "' (see procsim --help)\n";
     return 2;
 }

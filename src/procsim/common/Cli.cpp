@@ -1,8 +1,13 @@
 #include "common/Cli.hpp"
 
 #include <exception>
+#include <filesystem>
 #include <iostream>
+#include <new>
 #include <utility>
+
+#include "common/Checked.hpp"
+#include "common/Csv.hpp"
 
 namespace procsim
 {
@@ -30,22 +35,25 @@ std::string ArgReader::value()
     {
         throw InputError(command_ + ": option " + arg_ + " expects a value");
     }
+    if (!given_.insert(arg_).second)   // a second value would silently replace the first
+    {
+        throw InputError(command_ + ": option " + arg_ + " given twice");
+    }
     return argv_[++index_];
 }
 
 long ArgReader::positiveInteger()
 {
     const std::string v = value();
-    try
-    {
-        std::size_t pos = 0;
-        const long n = std::stol(v, &pos);
-        if (n > 0 && pos == v.size()) return n;
-    }
-    catch (const std::exception&)
-    {
-    }
+    if (const auto n = parseInteger(v, 1, 2147483647L)) return *n;
     throw InputError(command_ + ": option " + arg_ + " expects a positive integer, got '" + v + "'");
+}
+
+double ArgReader::finiteNumber()
+{
+    const std::string v = value();
+    if (const auto x = parseFinite(v)) return *x;
+    throw InputError(command_ + ": option " + arg_ + " expects a finite number, got '" + v + "'");
 }
 
 InputError ArgReader::unknown(const std::string& helpPath) const
@@ -59,20 +67,52 @@ InputError ArgReader::extraPositional() const
     return InputError(command_ + ": more than one case file given ('" + arg_ + "')");
 }
 
+namespace
+{
+
+// One line: a message with line breaks (a library's text) is folded.
+std::string oneLine(std::string text)
+{
+    for (char& ch : text)
+    {
+        if (ch == '\n' || ch == '\r') ch = ' ';
+    }
+    return text;
+}
+
+} // namespace
+
 int runGuarded(int (*run)(int, char**), int argc, char** argv)
 {
+    const std::string command = argv[0];
+    std::string message;
     try
     {
-        return run(argc, argv);
+        OutputBatch outputs;
+        const int status = run(argc, argv);
+        if (status == 0) outputs.commit();
+        return status;
     }
     catch (const InputError& e)
     {
-        std::cerr << "procsim: " << e.what() << '\n';
+        message = e.what();
+    }
+    catch (const std::bad_alloc&)
+    {
+        message = command + ": out of memory: the run is too large for this machine (reduce its size or"
+                            " duration); no output was written";
+    }
+    catch (const std::filesystem::filesystem_error& e)
+    {
+        const std::string p = e.path1().string();
+        message = command + ": cannot " + (p.empty() ? "use the output directory" : "create or use '" + p + "'")
+                  + ": " + e.code().message();
     }
     catch (const std::exception& e)
     {
-        std::cerr << "procsim: " << argv[0] << ": " << e.what() << '\n';
+        message = command + ": failed: " + e.what();
     }
+    std::cerr << "procsim: " << oneLine(message) << '\n';
     return 1;
 }
 

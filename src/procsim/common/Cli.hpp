@@ -1,5 +1,6 @@
 #pragma once
 // Command-line conventions shared by every procsim subcommand.
+#include <set>
 #include <stdexcept>
 #include <string>
 
@@ -29,8 +30,9 @@ public:
     const std::string& arg() const { return arg_; }
     bool isOption() const { return !arg_.empty() && arg_[0] == '-'; }
 
-    std::string value();                // the option's value: the next argument
-    long positiveInteger();             // value() as a whole number > 0
+    std::string value();                // the option's value: the next argument (once per option)
+    long positiveInteger();             // value() as a whole number > 0 (within int)
+    double finiteNumber();              // value() as a finite number
 
     // "<command>: unknown option '-x' (see procsim <helpPath> --help)"
     InputError unknown(const std::string& helpPath) const;
@@ -43,10 +45,12 @@ private:
     char** argv_;
     int index_ = 0;
     std::string arg_;
+    std::set<std::string> given_;
 };
 
-// Runs a subcommand, turning InputError (and other exceptions) into one
-// line on stderr and exit status 1.
+// Runs a subcommand inside an OutputBatch (its files are put in place only
+// if it succeeds), turning InputError and any other exception into one line
+// on stderr naming the subcommand, and exit status 1.
 int runGuarded(int (*run)(int, char**), int argc, char** argv);
 
 } // namespace procsim

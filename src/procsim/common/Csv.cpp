@@ -1,13 +1,53 @@
 #include "common/Csv.hpp"
 
+#include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <iomanip>
+#include <limits>
+#include <memory>
+#include <mutex>
 #include <sstream>
+#include <utility>
 
+#include "common/Checked.hpp"
 #include "common/Cli.hpp"
 
 namespace procsim
 {
+
+namespace
+{
+
+struct Batch
+{
+    std::vector<std::pair<std::string, std::string>> staged;   // tmp, final
+    std::vector<std::function<void()>> deferred;
+};
+
+std::mutex batchMutex;
+std::unique_ptr<Batch> current;   // the open batch (one at a time: main's)
+
+void putInPlace(const std::string& tmp, const std::string& path)
+{
+    if (std::rename(tmp.c_str(), path.c_str()) != 0)
+    {
+        std::remove(tmp.c_str());
+        throw InputError(path + ": cannot be written (rename from its temporary failed)");
+    }
+}
+
+bool isMissing(const std::string& cell)
+{
+    std::string t;
+    for (char ch : cell)
+    {
+        if (ch != ' ' && ch != '\t') t += ch;
+    }
+    return t.empty() || t == "nan" || t == "NaN";
+}
+
+} // namespace
 
 std::string formatNumber(double v, int significant)
 {
@@ -16,15 +56,83 @@ std::string formatNumber(double v, int significant)
     return os.str();
 }
 
-CsvWriter::CsvWriter(const std::string& path, const std::vector<std::string>& header)
-    : path_(path), out_(path + ".tmp")
+OutputBatch::OutputBatch()
 {
-    if (!out_) throw InputError(path + ": cannot be written");
-    out_ << std::setprecision(10);
-    row(header);
+    std::lock_guard<std::mutex> lock(batchMutex);
+    current = std::make_unique<Batch>();
 }
 
-CsvWriter::~CsvWriter()
+OutputBatch::~OutputBatch()
+{
+    std::lock_guard<std::mutex> lock(batchMutex);
+    if (!current) return;
+    for (const auto& [tmp, path] : current->staged) std::remove(tmp.c_str());
+    current.reset();
+}
+
+void OutputBatch::commit()
+{
+    std::unique_ptr<Batch> b;
+    {
+        std::lock_guard<std::mutex> lock(batchMutex);
+        b = std::move(current);
+    }
+    if (!b) return;
+    for (std::size_t i = 0; i < b->staged.size(); ++i)
+    {
+        try
+        {
+            putInPlace(b->staged[i].first, b->staged[i].second);
+        }
+        catch (...)
+        {
+            for (std::size_t j = i + 1; j < b->staged.size(); ++j) std::remove(b->staged[j].first.c_str());
+            throw;
+        }
+    }
+    for (auto& work : b->deferred) work();
+}
+
+bool OutputBatch::open()
+{
+    std::lock_guard<std::mutex> lock(batchMutex);
+    return current != nullptr;
+}
+
+void OutputBatch::stage(const std::string& tmp, const std::string& path)
+{
+    std::unique_lock<std::mutex> lock(batchMutex);
+    if (current)
+    {
+        for (const auto& staged : current->staged)
+        {
+            if (staged.second == path) throw InputError(path + ": would be written twice by one run (two equal names?)");
+        }
+        current->staged.emplace_back(tmp, path);
+        return;
+    }
+    lock.unlock();
+    putInPlace(tmp, path);
+}
+
+void OutputBatch::defer(std::function<void()> work)
+{
+    std::unique_lock<std::mutex> lock(batchMutex);
+    if (current)
+    {
+        current->deferred.push_back(std::move(work));
+        return;
+    }
+    lock.unlock();
+    work();
+}
+
+OutputFile::OutputFile(const std::string& path) : path_(path), out_(path + ".tmp")
+{
+    if (!out_) throw InputError(path + ": cannot be written");
+}
+
+OutputFile::~OutputFile()
 {
     if (!closed_)
     {
@@ -33,27 +141,62 @@ CsvWriter::~CsvWriter()
     }
 }
 
+void OutputFile::close()
+{
+    out_.close();
+    closed_ = true;
+    if (!out_)
+    {
+        std::remove((path_ + ".tmp").c_str());
+        throw InputError(path_ + ": cannot be written (disk full?)");
+    }
+    OutputBatch::stage(path_ + ".tmp", path_);
+}
+
+void writeTextFile(const std::string& path, const std::string& text)
+{
+    OutputFile f(path);
+    f.out() << text;
+    f.close();
+}
+
+CsvWriter::CsvWriter(const std::string& path, const std::vector<std::string>& header)
+    : file_(path), header_(header)
+{
+    file_.out() << std::setprecision(10);
+    row(header);
+}
+
 void CsvWriter::row(const std::vector<double>& values)
 {
-    for (std::size_t i = 0; i < values.size(); ++i) out_ << (i ? "," : "") << values[i];
-    out_ << '\n';
+    // nan may stand for "not available"; an infinity is always an input out of range
+    for (std::size_t i = 0; i < values.size(); ++i)
+    {
+        if (std::isinf(values[i]))
+        {
+            throw InputError(file_.path() + ": column '" + (i < header_.size() ? header_[i] : std::to_string(i + 1))
+                             + "' would hold an infinite result (an input far out of range?)");
+        }
+    }
+    std::ostream& out = file_.out();
+    for (std::size_t i = 0; i < values.size(); ++i) out << (i ? "," : "") << values[i];
+    out << '\n';
 }
 
 void CsvWriter::row(const std::vector<std::string>& values)
 {
+    std::ostream& out = file_.out();
     for (std::size_t i = 0; i < values.size(); ++i)
     {
         const bool quote = values[i].find(',') != std::string::npos;
-        out_ << (i ? "," : "") << (quote ? "\"" : "") << values[i] << (quote ? "\"" : "");
+        out << (i ? "," : "") << (quote ? "\"" : "") << values[i] << (quote ? "\"" : "");
     }
-    out_ << '\n';
+    out << '\n';
 }
 
 void CsvWriter::close()
 {
-    out_.close();
-    std::rename((path_ + ".tmp").c_str(), path_.c_str());
-    closed_ = true;
+    file_.close();
 }
 
 std::size_t CsvTable::column(const std::string& name, const std::string& file) const
@@ -65,8 +208,10 @@ std::size_t CsvTable::column(const std::string& name, const std::string& file) c
     throw InputError(file + ": column '" + name + "' is missing");
 }
 
-CsvTable readCsv(const std::string& path)
+CsvTable readCsv(const std::string& path, bool allowMissing)
 {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) throw InputError(path + ": is a directory, expected a CSV file");
     std::ifstream in(path);
     if (!in) throw InputError(path + ": cannot be read (missing file?)");
     CsvTable table;
@@ -75,34 +220,40 @@ CsvTable readCsv(const std::string& path)
     while (std::getline(in, line))
     {
         ++lineNo;
+        if (!line.empty() && line.back() == '\r') line.pop_back();
         if (line.empty() || line[0] == '#') continue;
         std::vector<std::string> cells;
         std::stringstream ss(line);
         std::string cell;
         while (std::getline(ss, cell, ',')) cells.push_back(cell);
+        if (!line.empty() && line.back() == ',') cells.emplace_back();
+        const std::string where = path + ": line " + std::to_string(lineNo);
         if (table.header.empty())
         {
+            rejectDuplicates(cells, where, "column");
             table.header = cells;
             continue;
         }
-        std::vector<double> row;
-        for (const auto& c : cells)
+        if (cells.size() != table.header.size())
         {
-            try
-            {
-                row.push_back(std::stod(c));
-            }
-            catch (const std::exception&)
-            {
-                throw InputError(path + ": line " + std::to_string(lineNo)
-                                 + ": expected a number, got '" + c + "'");
-            }
+            throw InputError(where + ": expected " + std::to_string(table.header.size()) + " columns, got "
+                             + std::to_string(cells.size()));
         }
-        if (row.size() != table.header.size())
+        std::vector<double> row;
+        for (std::size_t i = 0; i < cells.size(); ++i)
         {
-            throw InputError(path + ": line " + std::to_string(lineNo) + ": expected "
-                             + std::to_string(table.header.size()) + " columns, got "
-                             + std::to_string(row.size()));
+            const auto v = parseFinite(cells[i]);
+            if (!v && allowMissing && isMissing(cells[i]))
+            {
+                row.push_back(std::numeric_limits<double>::quiet_NaN());
+                continue;
+            }
+            if (!v)
+            {
+                throw InputError(where + ": column '" + table.header[i] + "' expected a finite number, got '"
+                                 + cells[i] + "'");
+            }
+            row.push_back(*v);
         }
         table.rows.push_back(row);
     }

@@ -6,6 +6,8 @@
 namespace procsim
 {
 
+// Drawn through "<png>.tmp"; inside an OutputBatch the drawing waits until the
+// batch commits (the data it plots is in place then) and returns true.
 // Returns false (and prints a warning) if gnuplot is missing or fails;
 // plots are a convenience, the CSV is the result.
 bool plotPng(const std::string& png, const std::string& gnuplotScript,

@@ -3,10 +3,56 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
+
+#include "common/Checked.hpp"
+#include "common/Csv.hpp"
 
 namespace procsim
 {
+
+namespace
+{
+
+std::string joinPath(const std::string& path, const std::string& key)
+{
+    return path.empty() ? key : path + "." + key;
+}
+
+// yaml-cpp keeps the first (or last) of two equal keys without a word; an
+// input with a key given twice is refused instead.
+void rejectDuplicateKeys(const YAML::Node& node, const std::string& file, const std::string& path)
+{
+    if (node.IsMap())
+    {
+        std::set<std::string> seen;
+        for (const auto& kv : node)
+        {
+            const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : "?";
+            if (!seen.insert(key).second)
+            {
+                throw InputError(file + ": line " + std::to_string(kv.first.Mark().line + 1) + ": key '"
+                                 + joinPath(path, key) + "' is given twice");
+            }
+            rejectDuplicateKeys(kv.second, file, joinPath(path, key));
+        }
+    }
+    else if (node.IsSequence())
+    {
+        for (std::size_t i = 0; i < node.size(); ++i)
+        {
+            rejectDuplicateKeys(node[i], file, path + "[" + std::to_string(i) + "]");
+        }
+    }
+}
+
+std::string withUnit(const std::string& what, const std::string& unit)
+{
+    return what + (unit.empty() ? "" : " [" + unit + "]");
+}
+
+} // namespace
 
 std::string relativeTo(const std::string& dir, const std::string& path)
 {
@@ -16,6 +62,11 @@ std::string relativeTo(const std::string& dir, const std::string& path)
 
 YamlInput YamlInput::load(const std::string& path)
 {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec))
+    {
+        throw InputError(path + ": is a directory, expected an input file");
+    }
     std::ifstream in(path);
     if (!in)
     {
@@ -23,7 +74,9 @@ YamlInput YamlInput::load(const std::string& path)
     }
     try
     {
-        return YamlInput(YAML::LoadFile(path), path, "");
+        YAML::Node root = YAML::LoadFile(path);
+        rejectDuplicateKeys(root, path, "");
+        return YamlInput(root, path, "");
     }
     catch (const YAML::Exception& e)
     {
@@ -40,7 +93,7 @@ YamlInput::YamlInput(YAML::Node node, std::string file, std::string path)
 
 std::string YamlInput::keyPath(const std::string& key) const
 {
-    return path_.empty() ? key : path_ + "." + key;
+    return joinPath(path_, key);
 }
 
 InputError YamlInput::error(const std::string& key, const std::string& expected) const
@@ -102,16 +155,11 @@ std::vector<std::string> YamlInput::keys() const
 
 double YamlInput::number(const std::string& key, const std::string& unit) const
 {
-    const std::string expected = "a number" + (unit.empty() ? "" : " [" + unit + "]");
+    const std::string expected = withUnit("a finite number", unit);
     const YAML::Node n = required(key, expected);
-    try
-    {
-        return n.as<double>();
-    }
-    catch (const YAML::Exception&)
-    {
-        throw error(key, expected);
-    }
+    const auto v = n.IsScalar() ? parseFinite(n.Scalar()) : std::nullopt;
+    if (!v) throw error(key, expected);
+    return *v;
 }
 
 double YamlInput::number(const std::string& key, double fallback, const std::string& unit) const
@@ -122,28 +170,45 @@ double YamlInput::number(const std::string& key, double fallback, const std::str
 double YamlInput::positive(const std::string& key, const std::string& unit) const
 {
     const double v = number(key, unit);
-    if (!(v > 0)) throw error(key, "a positive number" + (unit.empty() ? "" : " [" + unit + "]"));
+    if (!(v > 0)) throw error(key, withUnit("a positive number", unit));
     return v;
 }
 
 double YamlInput::nonNegative(const std::string& key, const std::string& unit) const
 {
     const double v = number(key, unit);
-    if (!(v >= 0)) throw error(key, "a number >= 0" + (unit.empty() ? "" : " [" + unit + "]"));
+    if (!(v >= 0)) throw error(key, withUnit("a number >= 0", unit));
     return v;
+}
+
+double YamlInput::within(const std::string& key, double lo, double hi, const std::string& unit) const
+{
+    const double v = number(key, unit);
+    if (!(v >= lo && v <= hi))
+    {
+        throw error(key, withUnit("a number from " + formatNumber(lo) + " to " + formatNumber(hi), unit));
+    }
+    return v;
+}
+
+double YamlInput::within(const std::string& key, double fallback, double lo, double hi,
+                         const std::string& unit) const
+{
+    return has(key) ? within(key, lo, hi, unit) : fallback;
 }
 
 long YamlInput::integer(const std::string& key) const
 {
-    const YAML::Node n = required(key, "an integer");
-    try
-    {
-        return n.as<long>();
-    }
-    catch (const YAML::Exception&)
-    {
-        throw error(key, "an integer");
-    }
+    return integer(key, -2147483647L, 2147483647L);
+}
+
+long YamlInput::integer(const std::string& key, long min, long max) const
+{
+    const std::string expected = "an integer from " + std::to_string(min) + " to " + std::to_string(max);
+    const YAML::Node n = required(key, expected);
+    const auto v = n.IsScalar() ? parseInteger(n.Scalar(), min, max) : std::nullopt;
+    if (!v) throw error(key, expected);
+    return *v;
 }
 
 std::string YamlInput::text(const std::string& key) const
@@ -160,17 +225,20 @@ std::string YamlInput::text(const std::string& key, const std::string& fallback)
 
 std::vector<double> YamlInput::numbers(const std::string& key, const std::string& unit) const
 {
-    const std::string expected = "a list of numbers" + (unit.empty() ? "" : " [" + unit + "]");
+    const std::string expected = withUnit("a list of finite numbers", unit);
     const YAML::Node n = required(key, expected);
     if (!n.IsSequence()) throw error(key, expected);
     std::vector<double> out;
-    try
+    for (std::size_t i = 0; i < n.size(); ++i)
     {
-        for (const auto& v : n) out.push_back(v.as<double>());
-    }
-    catch (const YAML::Exception&)
-    {
-        throw error(key, expected);
+        const auto v = n[i].IsScalar() ? parseFinite(n[i].Scalar()) : std::nullopt;
+        if (!v)
+        {
+            const std::string got = n[i].IsScalar() ? ", got '" + n[i].Scalar() + "'" : "";
+            throw InputError(file_ + ": key '" + keyPath(key) + "[" + std::to_string(i) + "]' expected "
+                             + withUnit("a finite number", unit) + got);
+        }
+        out.push_back(*v);
     }
     return out;
 }

@@ -36,7 +36,12 @@ public:
     double number(const std::string& key, double fallback, const std::string& unit = "") const;
     double positive(const std::string& key, const std::string& unit = "") const;
     double nonNegative(const std::string& key, const std::string& unit = "") const;
-    long integer(const std::string& key) const;
+    // Numbers are finite and whole: ".inf", ".nan", "1e400" and "3abc" are refused.
+    double within(const std::string& key, double lo, double hi, const std::string& unit = "") const;
+    double within(const std::string& key, double fallback, double lo, double hi,
+                  const std::string& unit = "") const;
+    long integer(const std::string& key) const;            // within the range of int
+    long integer(const std::string& key, long min, long max) const;
     std::string text(const std::string& key) const;
     std::string text(const std::string& key, const std::string& fallback) const;
     std::vector<double> numbers(const std::string& key, const std::string& unit = "") const;

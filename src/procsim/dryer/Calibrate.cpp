@@ -6,6 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "common/Ceres.hpp"
 #include "common/Cli.hpp"
 
 namespace procsim::dryer
@@ -94,6 +95,7 @@ CalibrationResult calibrate(Plant& plant, int maxIterations, double functionTole
     opt.logging_type = ceres::SILENT;
     opt.num_threads = 2;
     ceres::Solver::Summary summary;
+    quietCeres();
     ceres::Solve(opt, &problem, &summary);
     out.fitted = x;
     out.initialCost = summary.initial_cost;

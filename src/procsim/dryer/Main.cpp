@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "common/Checked.hpp"
 #include "common/Cli.hpp"
 #include "common/Csv.hpp"
 #include "common/Plot.hpp"
@@ -234,6 +235,7 @@ Args parse(int argc, char** argv, const std::vector<std::string>& valued)
                 if (v == s) known = true;
             if (!known) throw InputError(std::string("dryer ") + argv[0] + ": unknown option '" + s + "'");
             if (i + 1 >= argc) throw InputError(std::string("dryer ") + argv[0] + ": option '" + s + "' needs a value");
+            if (a.options.count(s)) throw InputError(std::string("dryer ") + argv[0] + ": option '" + s + "' given twice");
             a.options[s] = argv[++i];
         }
         else
@@ -245,19 +247,9 @@ Args parse(int argc, char** argv, const std::vector<std::string>& valued)
 double optNumber(const Args& a, const std::string& key, const std::string& cmd)
 {
     const std::string& v = a.options.at(key);
-    std::size_t used = 0;
-    double x = 0;
-    try
-    {
-        x = std::stod(v, &used);
-    }
-    catch (const std::exception&)
-    {
-        used = 0;
-    }
-    if (used != v.size() || used == 0)
-        throw InputError("dryer " + cmd + ": option '" + key + "' expected a number, got '" + v + "'");
-    return x;
+    const auto x = parseFinite(v);
+    if (!x) throw InputError("dryer " + cmd + ": option '" + key + "' expected a finite number, got '" + v + "'");
+    return *x;
 }
 
 std::string outDir(const Args& a)
@@ -885,7 +877,7 @@ int main(int argc, char** argv)
     if (cmd == "simulate") return runSimulate(argc - 1, argv + 1);
     if (cmd == "calibrate") return runCalibrate(argc - 1, argv + 1);
     if (cmd == "whatif") return runWhatif(argc - 1, argv + 1);
-    throw InputError("dryer: unknown command '" + cmd + "' (metrics, psychro, simulate, calibrate, whatif)");
+    throw InputError("dryer: unknown command '" + cmd + "' (metrics, psychro, simulate, calibrate, whatif; see procsim dryer --help)");
 }
 
 } // namespace procsim::dryer

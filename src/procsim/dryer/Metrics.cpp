@@ -4,6 +4,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "common/Checked.hpp"
 #include "common/Cli.hpp"
 #include "common/Csv.hpp"
 #include "common/YamlInput.hpp"
@@ -82,6 +83,27 @@ void validate(const BatchRecord& b, const std::string& where)
     };
     std::ostringstream x1;
     x1 << b.x1 * 100;
+    auto bounded = [&](double v, double lo, double hi, const std::string& key, const std::string& unit) {
+        if (!(v >= lo && v <= hi))
+        {
+            std::ostringstream os;
+            os << "a number from " << lo << " to " << hi << " [" << unit << "], got " << v;
+            fail(key, os.str());
+        }
+    };
+    // bounds that keep a record physical (and its arithmetic finite)
+    bounded(b.hotAirC, -50, 500, "hot_air_temperature_C", "degC");
+    bounded(b.ambientC, -50, 60, "ambient_temperature_C", "degC");
+    bounded(b.x1 * 100, 0, 10000, "initial_moisture_percent_db", "% dry basis");
+    bounded(b.timeS / 3600, 0, 1e4, "drying_time_h", "h");
+    bounded(b.electricityJ / 3.6e6, 0, 1e9, "electricity_kWh", "kWh");
+    if (b.rateKgPerS) bounded(*b.rateKgPerS * 3600, 0, 1e7, "evaporation_rate_kg_per_h", "kg/h");
+    if (b.dryMassKg) bounded(*b.dryMassKg, 0, 1e9, "dry_mass_kg", "kg");
+    if (b.waterKg) bounded(*b.waterKg, 0, 1e9, "evaporated_water_kg", "kg");
+    if (b.paperEta && !(*b.paperEta > 0 && *b.paperEta <= 1))
+        fail("paper_energy_efficiency_percent", "a percentage above 0 and up to 100");
+    if (b.paperE && !(*b.paperE > 0 && *b.paperE <= 1e12))
+        fail("paper_specific_energy_kJ_per_kg", "a positive energy up to 1e9 [kJ/kg]");
     if (!(b.x1 > 0)) fail("initial_moisture_percent_db", "a positive moisture content [% dry basis]");
     if (!(b.x2 >= 0)) fail("final_moisture_percent_db", "a moisture content >= 0 [% dry basis]");
     if (!(b.x2 < b.x1))
@@ -197,7 +219,7 @@ BatchFile readYaml(const std::string& path)
 
 BatchFile readCsvFile(const std::string& path)
 {
-    const CsvTable t = readCsv(path);
+    const CsvTable t = readCsv(path, true);   // "nan" = not given
     auto col = [&](const std::string& name) -> long {
         for (std::size_t i = 0; i < t.header.size(); ++i)
             if (t.header[i] == name) return static_cast<long>(i);
@@ -253,8 +275,9 @@ BatchFile readCsvFile(const std::string& path)
 
 BatchFile readBatchFile(const std::string& path)
 {
-    if (endsWith(path, ".csv")) return readCsvFile(path);
-    return readYaml(path);
+    BatchFile f = endsWith(path, ".csv") ? readCsvFile(path) : readYaml(path);
+    rejectDuplicates(f.batches, &BatchRecord::id, path, "batch id");
+    return f;
 }
 
 } // namespace procsim::dryer

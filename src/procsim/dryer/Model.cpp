@@ -354,6 +354,7 @@ BatchResult simulate(const DryerCase& c, double latentPerKg)
     const double productWater0 = L.xAverage(y) * c.dryMass;
 
     cv.mem = CVodeCreate(CV_BDF, cv.ctx);
+    CVodeSetErrFile(cv.mem, nullptr);   // failures are reported as one line by checkCvode
     checkCvode(CVodeInit(cv.mem, cvRhs, 0.0, cv.y), "init");
     checkCvode(CVodeSetErrHandlerFn(cv.mem, quietCvode, nullptr), "error handler");
     checkCvode(CVodeSetUserData(cv.mem, const_cast<Loop*>(&L)), "user data");

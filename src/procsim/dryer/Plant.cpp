@@ -1,12 +1,12 @@
 #include "dryer/Plant.hpp"
 
 #include <cmath>
-#include <fstream>
 #include <iomanip>
 #include <sstream>
 
-#include "common/Csv.hpp"
+#include "common/Checked.hpp"
 #include "common/Cli.hpp"
+#include "common/Csv.hpp"
 #include "common/YamlInput.hpp"
 #include "dryer/Metrics.hpp"
 #include "dryer/Psychrometrics.hpp"
@@ -26,7 +26,7 @@ std::vector<double> positiveList(const YamlInput& in, const std::string& key, st
     if (v.size() != size)
         throw in.error(key, "a list of " + std::to_string(size) + " " + what);
     for (double x : v)
-        if (!(x > 0)) throw in.error(key, "positive relative air shares");
+        if (!(x >= 0.01 && x <= 100)) throw in.error(key, "relative air shares from 0.01 to 100");
     return v;
 }
 
@@ -52,13 +52,16 @@ void readDryer(const YamlInput& d, DryerCase& c)
     c.carts = count("carts");
     c.traysPerCart = count("trays_per_cart");
     c.piecesPerTray = count("pieces_per_tray");
-    c.airHoldup = d.positive("air_holdup_kg", "kg");
-    c.wallUA = d.nonNegative("wall_UA_W_per_K", "W/K");
-    c.heaterPower = d.positive("heater_power_kW", "kW") * 1e3;
-    c.fanPower = d.nonNegative("fan_power_kW", "kW") * 1e3;
-    c.circulation = d.positive("circulation_kg_per_s", "kg dry air/s");
-    c.hConv = d.positive("heat_transfer_coefficient_W_per_m2K", "W/(m2 K)");
-    c.velocityExponent = d.nonNegative("velocity_exponent");
+    if (c.carts * c.traysPerCart > 2000)   // the dense implicit solve grows with the cube of the trays
+        throw d.error("trays_per_cart", "at most 2000 trays in all (carts x trays_per_cart), got "
+                                            + std::to_string(c.carts * c.traysPerCart));
+    c.airHoldup = d.within("air_holdup_kg", 1e-06, 10000000.0, "kg");
+    c.wallUA = d.within("wall_UA_W_per_K", 0, 100000000.0, "W/K");
+    c.heaterPower = d.within("heater_power_kW", 1e-06, 1000000.0, "kW") * 1e3;
+    c.fanPower = d.within("fan_power_kW", 0, 1000000.0, "kW") * 1e3;
+    c.circulation = d.within("circulation_kg_per_s", 1e-06, 100000.0, "kg dry air/s");
+    c.hConv = d.within("heat_transfer_coefficient_W_per_m2K", 1e-06, 100000.0, "W/(m2 K)");
+    c.velocityExponent = d.within("velocity_exponent", 0, 10);
     c.cartFactors.clear();
     c.trayFactors.clear();
     if (d.has("air_distribution"))
@@ -79,10 +82,10 @@ void readProduct(const YamlInput& p, DryerCase& c)
 {
     p.rejectUnknown({"piece_diameter_mm", "piece_length_m", "specific_heat_dry_J_per_kgK",
                      "scorch_temperature_C"});
-    c.pieceDiameter = p.positive("piece_diameter_mm", "mm") / 1e3;
-    c.pieceLength = p.positive("piece_length_m", "m");
-    c.cpDry = p.positive("specific_heat_dry_J_per_kgK", "J/(kg K)");
-    c.scorchC = p.number("scorch_temperature_C", "degC");
+    c.pieceDiameter = p.within("piece_diameter_mm", 0.001, 10000.0, "mm") / 1e3;
+    c.pieceLength = p.within("piece_length_m", 1e-06, 100, "m");
+    c.cpDry = p.within("specific_heat_dry_J_per_kgK", 1, 100000.0, "J/(kg K)");
+    c.scorchC = p.within("scorch_temperature_C", -50, 500, "degC");
 }
 
 void readKinetics(const YamlInput& k, DryerCase& c)
@@ -94,20 +97,20 @@ void readKinetics(const YamlInput& k, DryerCase& c)
     if (model == "thin-layer")
     {
         c.kinetics = DryerCase::Kinetics::ThinLayer;
-        c.rateConstant = k.positive("rate_constant_per_h", "1/h") / 3600.0;
-        c.referenceC = k.number("reference_temperature_C", "degC");
-        c.activationEnergy = k.nonNegative("activation_energy_kJ_per_mol", "kJ/mol") * 1e3;
+        c.rateConstant = k.within("rate_constant_per_h", 1e-09, 1000000.0, "1/h") / 3600.0;
+        c.referenceC = k.within("reference_temperature_C", -50, 500, "degC");
+        c.activationEnergy = k.within("activation_energy_kJ_per_mol", 0, 10000.0, "kJ/mol") * 1e3;
     }
     else if (model == "characteristic-curve")
     {
         c.kinetics = DryerCase::Kinetics::CharacteristicCurve;
-        c.xCritical = k.positive("critical_moisture_percent_db", "% dry basis") / 100.0;
-        c.fallingExponent = k.positive("falling_rate_exponent");
+        c.xCritical = k.within("critical_moisture_percent_db", 1e-06, 10000.0, "% dry basis") / 100.0;
+        c.fallingExponent = k.within("falling_rate_exponent", 1e-06, 100);
     }
     else
         throw k.error("model", "'thin-layer' or 'characteristic-curve'");
-    c.oswinA = k.nonNegative("oswin_A_percent_db", "% dry basis") / 100.0;
-    c.oswinB = k.nonNegative("oswin_B");
+    c.oswinA = k.within("oswin_A_percent_db", 0, 10000.0, "% dry basis") / 100.0;
+    c.oswinB = k.within("oswin_B", 0, 10);
     if (!(c.oswinB < 1.0)) throw k.error("oswin_B", "an exponent from 0 to 1");
 }
 
@@ -115,7 +118,7 @@ void readOperation(const YamlInput& o, DryerCase& c)
 {
     o.rejectUnknown({"ambient_temperature_C", "ambient_relative_humidity_percent",
                      "pressure_kPa"});
-    c.pressure = o.positive("pressure_kPa", "kPa") * 1e3;
+    c.pressure = o.within("pressure_kPa", 1, 10000.0, "kPa") * 1e3;
     c.ambientC = o.number("ambient_temperature_C", "degC");
     if (!(c.ambientC >= 0 && c.ambientC <= 60))
         throw o.error("ambient_temperature_C", "an ambient temperature from 0 to 60 degC");
@@ -154,6 +157,26 @@ std::string knownParameter(const Plant& p, const YamlInput& f)
     return name;
 }
 
+// The values a fitted or held parameter may take: those its plant key accepts.
+std::pair<double, double> parameterRange(const std::string& name)
+{
+    if (name == "heat_transfer_coefficient_W_per_m2K") return {1e-6, 1e5};
+    if (name == "falling_rate_exponent") return {1e-6, 100};
+    if (name == "rate_constant_per_h") return {1e-9, 1e6};
+    if (name == "activation_energy_kJ_per_mol") return {0, 1e4};
+    if (name == "critical_moisture_percent_db") return {1e-6, 1e4};
+    if (name == "oswin_A_percent_db") return {0, 1e4};
+    if (name == "wall_UA_W_per_K") return {0, 1e8};
+    return {0, 1};   // the vented and short-circuit fractions
+}
+
+void checkParameterValue(const YamlInput& f, const std::string& key, const std::string& name, double v)
+{
+    const auto [lo, hi] = parameterRange(name);
+    if (!(v >= lo && v <= hi))
+        throw f.error(key, "values of " + name + " from " + formatNumber(lo) + " to " + formatNumber(hi));
+}
+
 void readProfile(const YamlInput& pr, Plant& p)
 {
     pr.rejectUnknown({"hold", "time_tolerance_percent", "electricity_tolerance_percent"});
@@ -164,13 +187,14 @@ void readProfile(const YamlInput& pr, Plant& p)
         axis.name = knownParameter(p, h);
         axis.values = h.numbers("values");
         if (axis.values.empty()) throw h.error("values", "a non-empty list of values");
+        for (double v : axis.values) checkParameterValue(h, "values", axis.name, v);
         for (const auto& other : p.profile)
             if (other.name == axis.name) throw h.error("parameter", "each parameter held once");
         p.profile.push_back(axis);
     }
     if (p.profile.empty()) throw pr.error("hold", "a non-empty list of {parameter, values}");
-    p.timeTolerance = pr.positive("time_tolerance_percent", "%") / 100;
-    p.electricityTolerance = pr.positive("electricity_tolerance_percent", "%") / 100;
+    p.timeTolerance = pr.within("time_tolerance_percent", 1e-06, 10000.0, "%") / 100;
+    p.electricityTolerance = pr.within("electricity_tolerance_percent", 1e-06, 10000.0, "%") / 100;
 }
 
 } // namespace
@@ -292,8 +316,8 @@ Plant readPlant(const std::string& path)
     {
         const YamlInput r = in.child("run");
         r.rejectUnknown({"max_time_h", "output_interval_min"});
-        p.base.maxTime = r.positive("max_time_h", "h") * 3600;
-        p.base.outputInterval = r.positive("output_interval_min", "min") * 60;
+        p.base.maxTime = r.within("max_time_h", 1e-06, 10000.0, "h") * 3600;
+        p.base.outputInterval = r.within("output_interval_min", 0.001, 1000000.0, "min") * 60;
     }
     const YamlInput v = in.child("venting");
     for (const auto& name : v.keys()) p.venting[name] = readVenting(v.child(name));
@@ -306,23 +330,24 @@ Plant readPlant(const std::string& path)
                          "initial_moisture_spread_percent", "pattern_seed", "measured", "note"});
         BatchSpec s;
         s.id = b.text("id");
+        checkFileNamePart(s.id, b.file() + ": key '" + b.path() + ".id'");   // names the batch's result files
         s.venting = b.text("venting");
         if (!p.venting.count(s.venting))
             throw b.error("venting", "the name of an arrangement under 'venting'");
-        s.hotAirC = b.number("hot_air_temperature_C", "degC");
+        s.hotAirC = b.within("hot_air_temperature_C", -50, 500, "degC");
         if (!(s.hotAirC > p.base.ambientC))
             throw b.error("hot_air_temperature_C",
                           "a set-point above the ambient " + fmt(p.base.ambientC) + " degC");
         if (!(s.hotAirC <= 150))
             throw b.error("hot_air_temperature_C", "a set-point of at most 150 degC");
-        s.dryMass = b.positive("dry_mass_kg", "kg");
-        s.x0 = b.positive("initial_moisture_percent_db", "% dry basis") / 100;
-        s.xTarget = b.positive("target_moisture_percent_db", "% dry basis") / 100;
+        s.dryMass = b.within("dry_mass_kg", 1e-06, 1000000000.0, "kg");
+        s.x0 = b.within("initial_moisture_percent_db", 1e-06, 10000.0, "% dry basis") / 100;
+        s.xTarget = b.within("target_moisture_percent_db", 1e-06, 10000.0, "% dry basis") / 100;
         if (!(s.xTarget < s.x0))
             throw b.error("target_moisture_percent_db",
                           "a value below initial_moisture_percent_db (" + fmt(s.x0 * 100) + ")");
         s.x0Spread = b.has("initial_moisture_spread_percent")
-                         ? b.nonNegative("initial_moisture_spread_percent", "%") / 100
+                         ? b.within("initial_moisture_spread_percent", 0, 10000.0, "%") / 100
                          : 0.0;
         s.seed = static_cast<unsigned>(b.has("pattern_seed") ? b.integer("pattern_seed") : 1);
         if (b.has("measured"))
@@ -341,13 +366,14 @@ Plant readPlant(const std::string& path)
                 }
             }
             if (m.has("electricity_kWh"))
-                s.measuredElectricity = m.positive("electricity_kWh", "kWh") * 3.6e6;
-            if (m.has("f1_percent")) s.measuredF1 = m.nonNegative("f1_percent", "%");
-            if (m.has("f2_percent")) s.measuredF2 = m.nonNegative("f2_percent", "%");
+                s.measuredElectricity = m.within("electricity_kWh", 1e-06, 1000000000.0, "kWh") * 3.6e6;
+            if (m.has("f1_percent")) s.measuredF1 = m.within("f1_percent", 0, 100, "%");
+            if (m.has("f2_percent")) s.measuredF2 = m.within("f2_percent", 0, 100, "%");
         }
         p.batches.push_back(s);
     }
     if (p.batches.empty()) throw in.error("batches", "a non-empty list of batches");
+    rejectDuplicates(p.batches, &BatchSpec::id, in.file() + ": key 'batches'", "batch id");
 
     if (in.has("calibration"))
     {
@@ -360,6 +386,8 @@ Plant readPlant(const std::string& path)
             fp.name = knownParameter(p, f);
             fp.lower = f.number("lower");
             fp.upper = f.number("upper");
+            checkParameterValue(f, "lower", fp.name, fp.lower);
+            checkParameterValue(f, "upper", fp.name, fp.upper);
             if (!(fp.lower < fp.upper)) throw f.error("upper", "a value above 'lower'");
             p.fit.push_back(fp);
         }
@@ -396,8 +424,8 @@ Plant readPlant(const std::string& path)
 
 void writePlant(const Plant& p, const std::string& path, const std::string& comment)
 {
-    std::ofstream o(path);
-    if (!o) throw InputError(path + ": cannot be written");
+    OutputFile file(path);
+    std::ostream& o = file.out();
     const DryerCase& c = p.base;
     auto list = [](const std::vector<double>& v) {
         std::string s = "[";
@@ -472,6 +500,7 @@ void writePlant(const Plant& p, const std::string& path, const std::string& comm
           << "\n  hot_air_temperatures_C: " << list(p.whatifTemperatures)
           << "\n  vented_fractions: " << list(p.whatifVentedFractions) << "\n";
     }
+    file.close();
 }
 
 } // namespace procsim::dryer

@@ -4,11 +4,16 @@
 #include <filesystem>
 #include <sstream>
 
+#include "common/Checked.hpp"
+#include "common/Csv.hpp"
+
 namespace procsim::kinetics
 {
 
 namespace
 {
+
+constexpr long maxReportTimes = 1000000;   // rows of timeseries.csv
 
 std::vector<std::string> splitDots(const std::string& key)
 {
@@ -48,7 +53,7 @@ void applyYamlOverride(YAML::Node& root, const std::string& file, const std::str
 
 void readSpeciesMap(const YamlInput& in, const std::string& key, const Mechanism& mech,
                     std::vector<double>& target, double factorPerMolarMass, bool perMolarMass,
-                    const std::string& unit)
+                    const std::string& unit, double maxValue)
 {
     if (!in.has(key)) return;
     const YamlInput m = in.child(key);
@@ -56,7 +61,7 @@ void readSpeciesMap(const YamlInput& in, const std::string& key, const Mechanism
     for (const auto& name : m.keys())
     {
         const std::size_t i = mech.index(name, in.file() + ": key '" + m.path() + "'");
-        const double v = m.nonNegative(name, unit);
+        const double v = m.within(name, 0, maxValue, unit);
         target[i] = perMolarMass ? v * factorPerMolarMass / mech.species[i].molarMass : v;
     }
 }
@@ -83,16 +88,9 @@ SweepDim parseSweep(const std::string& arg)
     std::string v;
     while (std::getline(ss, v, ','))
     {
-        try
-        {
-            std::size_t used = 0;
-            d.values.push_back(std::stod(v, &used));
-            if (used != v.size()) throw std::invalid_argument(v);
-        }
-        catch (const std::exception&)
-        {
-            throw InputError("--sweep " + d.key + ": expected numbers separated by commas, got '" + v + "'");
-        }
+        const auto x = parseFinite(v);
+        if (!x) throw InputError("--sweep " + d.key + ": expected finite numbers separated by commas, got '" + v + "'");
+        d.values.push_back(*x);
     }
     if (d.values.empty()) throw InputError("--sweep " + d.key + ": no values given");
     return d;
@@ -152,7 +150,9 @@ Case CaseSource::build(const Overrides& overrides) const
             {
                 throw InputError(c.mech.file + ": no reaction with id '" + id + "' (from '" + key + "')");
             }
-            if (!(value >= 0)) throw InputError(key + ": a rate constant must be >= 0");
+            if (!(value >= 0 && value <= maxRateConstant))
+                throw InputError(key + ": a rate constant must be from 0 to " + formatNumber(maxRateConstant) + ", got "
+                                 + formatNumber(value));
             c.mech.reactions[r].k = value;
         }
         else
@@ -168,7 +168,8 @@ Case CaseSource::build(const Overrides& overrides) const
 
     const YamlInput reactor = in.child("reactor");
     reactor.rejectUnknown({"liquid_volume_L"});
-    c.volume = reactor.positive("liquid_volume_L", "L");
+    c.volume = reactor.within("liquid_volume_L", 1e-9, 1e9, "L");
+    if (!(c.volume > 0)) throw reactor.error("liquid_volume_L", "a positive number [L]");
 
     c.inletPpm.assign(n, 0.0);
     c.effluentPpm.assign(n, 0.0);
@@ -176,13 +177,13 @@ Case CaseSource::build(const Overrides& overrides) const
     {
         const YamlInput gas = in.child("gas");
         gas.rejectUnknown({"flow_mL_per_min", "temperature_C", "pressure_kPa", "inlet_ppm", "effluent_ppm"});
-        const double flow = gas.nonNegative("flow_mL_per_min", "mL/min");
+        const double flow = gas.within("flow_mL_per_min", 0, 1e9, "mL/min");
         const double tC = gas.number("temperature_C", "degC");
-        if (tC <= -273.15) throw gas.error("temperature_C", "a temperature above absolute zero [degC]");
-        const double pKPa = gas.positive("pressure_kPa", "kPa");
+        if (!(tC > -273.15 && tC <= 5000)) throw gas.error("temperature_C", "a temperature above absolute zero and up to 5000 [degC]");
+        const double pKPa = gas.within("pressure_kPa", 1e-3, 1e6, "kPa");
         c.gasFlow = pKPa * 1e3 * flow * 1e-6 / 60.0 / (gasConstant * (tC + 273.15));
-        readSpeciesMap(gas, "inlet_ppm", c.mech, c.inletPpm, 1, false, "ppm by mol");
-        readSpeciesMap(gas, "effluent_ppm", c.mech, c.effluentPpm, 1, false, "ppm by mol");
+        readSpeciesMap(gas, "inlet_ppm", c.mech, c.inletPpm, 1, false, "ppm by mol", 1e6);
+        readSpeciesMap(gas, "effluent_ppm", c.mech, c.effluentPpm, 1, false, "ppm by mol", 1e6);
         for (std::size_t i = 0; i < n; ++i)
         {
             if (c.effluentPpm[i] > c.inletPpm[i])
@@ -194,11 +195,11 @@ Case CaseSource::build(const Overrides& overrides) const
     }
 
     c.initial.assign(n, 0.0);
-    readSpeciesMap(in, "initial_mg_per_L", c.mech, c.initial, 1e-3, true, "mg/L");
+    readSpeciesMap(in, "initial_mg_per_L", c.mech, c.initial, 1e-3, true, "mg/L", 1e6);
     if (in.has("initial_mol_per_L"))
     {
         std::vector<double> molar(n, 0.0);
-        readSpeciesMap(in, "initial_mol_per_L", c.mech, molar, 1, false, "mol/L");
+        readSpeciesMap(in, "initial_mol_per_L", c.mech, molar, 1, false, "mol/L", 1e3);
         for (std::size_t i = 0; i < n; ++i) c.initial[i] += molar[i];
     }
 
@@ -206,8 +207,8 @@ Case CaseSource::build(const Overrides& overrides) const
     {
         const YamlInput co = in.child("corona");
         co.rejectUnknown({"current_mA", "voltage_kV"});
-        c.current = co.nonNegative("current_mA", "mA");
-        c.voltage = co.has("voltage_kV") ? co.positive("voltage_kV", "kV") : 0.0;
+        c.current = co.within("current_mA", 0, 1e6, "mA");
+        c.voltage = co.has("voltage_kV") ? co.within("voltage_kV", 1e-6, 1e6, "kV") : 0.0;
     }
 
     if (in.has("oh"))
@@ -222,13 +223,13 @@ Case CaseSource::build(const Overrides& overrides) const
         if (c.oh.kind == "constant")
         {
             oh.rejectUnknown({"model", "concentration_mg_per_L"});
-            c.oh.concentration = oh.nonNegative("concentration_mg_per_L", "mg/L");
+            c.oh.concentration = oh.within("concentration_mg_per_L", 0, 1e6, "mg/L");
         }
         else if (c.oh.kind == "linear_current")
         {
             oh.rejectUnknown({"model", "slope_mg_per_L_per_mA", "intercept_mg_per_L"});
-            c.oh.slope = oh.nonNegative("slope_mg_per_L_per_mA", "mg/L per mA");
-            c.oh.intercept = oh.number("intercept_mg_per_L", 0.0, "mg/L");
+            c.oh.slope = oh.within("slope_mg_per_L_per_mA", 0, 1e6, "mg/L per mA");
+            c.oh.intercept = oh.within("intercept_mg_per_L", 0.0, -1e6, 1e6, "mg/L");
             if (!in.has("corona")) throw in.error("corona", "a section with current_mA (oh.model is linear_current)");
         }
         else if (c.oh.kind == "dynamic")
@@ -251,13 +252,23 @@ Case CaseSource::build(const Overrides& overrides) const
 
     const YamlInput time = in.child("time");
     time.rejectUnknown({"duration_h", "output_interval_min", "duration_s", "output_interval_s"});
-    if (time.has("duration_h")) c.duration = 3600.0 * time.positive("duration_h", "h");
-    else if (time.has("duration_s")) c.duration = time.positive("duration_s", "s");
+    for (const auto& [a, b] : {std::pair<const char*, const char*>{"duration_h", "duration_s"},
+                               {"output_interval_min", "output_interval_s"}})
+    {
+        if (time.has(a) && time.has(b))
+            throw InputError(file_ + ": keys 'time." + a + "' and 'time." + b + "' both given (expected one of them)");
+    }
+    if (time.has("duration_h")) c.duration = 3600.0 * time.within("duration_h", 1e-9, 1e9, "h");
+    else if (time.has("duration_s")) c.duration = time.within("duration_s", 1e-9, 3.6e12, "s");
     else throw time.error("duration_h", "a positive number [h] (or duration_s)");
     if (time.has("output_interval_min")) c.outputInterval = 60.0 * time.positive("output_interval_min", "min");
     else if (time.has("output_interval_s")) c.outputInterval = time.positive("output_interval_s", "s");
     else throw time.error("output_interval_min", "a positive number [min] (or output_interval_s)");
     if (c.outputInterval > c.duration) throw time.error("output_interval_min", "an interval no longer than the duration");
+    stepCount(c.duration, c.outputInterval, maxReportTimes, file_ + ": key 'time'",
+              "a run of " + formatNumber(c.duration / 3600.0) + " h reported every "
+                  + formatNumber(c.outputInterval / 60.0) + " min",
+              "use a longer output interval or a shorter duration");
 
     if (in.has("solver"))
     {
@@ -307,6 +318,7 @@ Case CaseSource::build(const Overrides& overrides) const
             c.sweep.push_back(s);
         }
         if (c.sweep.size() > 2) throw InputError(file_ + ": key 'sweep' expected at most two swept keys");
+        rejectDuplicates(c.sweep, &SweepDim::key, file_ + ": key 'sweep'", "swept key");
     }
     if (in.has("sensitivity"))
     {

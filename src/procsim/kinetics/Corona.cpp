@@ -79,7 +79,7 @@ std::string label(const YamlInput& item, std::size_t i)
 double kelvin(const YamlInput& item, const std::string& key)
 {
     const double t = item.number(key, "degC");
-    if (t <= -273.15) throw item.error(key, "a temperature above absolute zero [degC]");
+    if (!(t > -273.15 && t <= 5000)) throw item.error(key, "a temperature above absolute zero and up to 5000 [degC]");
     return t + 273.15;
 }
 
@@ -96,6 +96,7 @@ int coronaMain(int argc, char** argv)
         if (s == "-o" || s == "--output")
         {
             if (i + 1 >= argc) throw InputError("kinetics corona: -o needs a directory");
+            if (!dir.empty()) throw InputError("kinetics corona: option -o given twice");
             dir = argv[++i];
         }
         else if (!s.empty() && s[0] == '-') throw InputError("kinetics corona: unknown option '" + s + "'");
@@ -118,12 +119,12 @@ int coronaMain(int argc, char** argv)
         {
             const auto& it = items[i];
             it.rejectUnknown({"label", "voltage_kV", "wire_diameter_mm", "anode_diameter_mm", "temperature_C", "pressure_kPa"});
-            const double v = it.positive("voltage_kV", "kV") * 1e3;
-            const double r0 = it.positive("wire_diameter_mm", "mm") * 0.5e-3;
-            const double r = it.positive("anode_diameter_mm", "mm") * 0.5e-3;
+            const double v = it.within("voltage_kV", 1e-6, 1e4, "kV") * 1e3;
+            const double r0 = it.within("wire_diameter_mm", 1e-6, 1e4, "mm") * 0.5e-3;
+            const double r = it.within("anode_diameter_mm", 1e-6, 1e5, "mm") * 0.5e-3;
             if (r <= r0) throw it.error("anode_diameter_mm", "a diameter larger than the wire's [mm]");
             const double tK = kelvin(it, "temperature_C");
-            const double p = it.positive("pressure_kPa", "kPa") * 1e3;
+            const double p = it.within("pressure_kPa", 1e-3, 1e6, "kPa") * 1e3;
             const double n = numberDensity(p, tK);
             const double en = meanEOverN(v, r, r0, n) / townsend;
             csv.row(std::vector<std::string>{label(it, i), num(v / 1e3), num(2e3 * r0), num(2e3 * r), num(tK - 273.15), num(p / 1e3),
@@ -142,8 +143,8 @@ int coronaMain(int argc, char** argv)
         {
             const auto& it = items[i];
             it.rejectUnknown({"label", "outlet_ppm_no_discharge", "outlet_ppm_discharge", "temperature_C", "reference_temperature_C"});
-            const double c0 = it.positive("outlet_ppm_no_discharge", "ppm");
-            const double c = it.nonNegative("outlet_ppm_discharge", "ppm");
+            const double c0 = it.within("outlet_ppm_no_discharge", 1e-12, 1e6, "ppm");
+            const double c = it.within("outlet_ppm_discharge", 0, 1e6, "ppm");
             const double tK = kelvin(it, "temperature_C");
             const double tRef = it.has("reference_temperature_C") ? kelvin(it, "reference_temperature_C") : 298.15;
             const double psi = removalEfficiency(c0, c);
@@ -164,13 +165,13 @@ int coronaMain(int argc, char** argv)
             const auto& it = items[i];
             it.rejectUnknown({"label", "inlet_ppm", "outlet_ppm", "gas_flow_m3_per_s", "temperature_C", "pressure_kPa", "current_mA",
                               "voltage_kV"});
-            const double cin = it.nonNegative("inlet_ppm", "ppm");
-            const double cout = it.nonNegative("outlet_ppm", "ppm");
-            const double q = it.positive("gas_flow_m3_per_s", "m3/s");
+            const double cin = it.within("inlet_ppm", 0, 1e6, "ppm");
+            const double cout = it.within("outlet_ppm", 0, 1e6, "ppm");
+            const double q = it.within("gas_flow_m3_per_s", 1e-12, 1e6, "m3/s");
             const double tK = kelvin(it, "temperature_C");
-            const double p = it.positive("pressure_kPa", "kPa") * 1e3;
-            const double i_mA = it.positive("current_mA", "mA");
-            const double v_kV = it.positive("voltage_kV", "kV");
+            const double p = it.within("pressure_kPa", 1e-3, 1e6, "kPa") * 1e3;
+            const double i_mA = it.within("current_mA", 1e-9, 1e6, "mA");
+            const double v_kV = it.within("voltage_kV", 1e-6, 1e4, "kV");
             const double molar = p * q / (gasConstant * tK);
             const double qin = molar * cin * 1e-6, qout = molar * cout * 1e-6;
             const double j = energeticEfficiency(qin, qout, i_mA * 1e-3, v_kV * 1e3);

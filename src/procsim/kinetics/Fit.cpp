@@ -10,6 +10,7 @@
 #include <set>
 #include <sstream>
 
+#include "common/Ceres.hpp"
 #include "common/Csv.hpp"
 #include "common/Plot.hpp"
 #include "kinetics/Run.hpp"
@@ -51,22 +52,44 @@ struct Residuals
 {
     const std::vector<FitParameter>* params;
     const std::vector<FitDataset>* data;
-    bool operator()(double const* const* x, double* res) const
+    // Throws what the model throws; the cost is finite or false is returned.
+    bool evaluate(const double* x, double* res) const
     {
-        const Overrides o = valuesOf(*params, x[0]);
+        const Overrides o = valuesOf(*params, x);
         std::size_t k = 0;
+        double sum = 0;
         for (const auto& d : *data)
         {
             const auto pred = predictAt(d, o, d.t);
             for (std::size_t q = 0; q < d.quantities.size(); ++q)
                 for (std::size_t i = 0; i < d.t.size(); ++i)
-                    if (!std::isnan(d.measured[q][i])) res[k++] = (pred[q][i] - d.measured[q][i]) / d.sigma;
+                    if (!std::isnan(d.measured[q][i]))
+                    {
+                        res[k] = (pred[q][i] - d.measured[q][i]) / d.sigma;
+                        sum += res[k] * res[k];
+                        ++k;
+                    }
         }
-        return true;
+        return std::isfinite(sum);
+    }
+    // Ceres must not see an exception or a non-finite residual: either is an
+    // unsuccessful step it can step back from.
+    bool operator()(double const* const* x, double* res) const
+    {
+        try
+        {
+            return evaluate(x[0], res);
+        }
+        catch (const std::exception&)
+        {
+            return false;
+        }
     }
 };
 
 std::string num(double v, int p = 6) { return formatNumber(v, p); }
+
+constexpr double maxConcentration = 1e6;   // mg/L: far above any solubility
 
 } // namespace
 
@@ -93,6 +116,12 @@ FitResult fitParameters(std::vector<FitParameter> params, const std::vector<FitD
         if (!(params[i].initial > 0)) throw InputError("fit: parameter '" + params[i].key + "' needs a positive initial value");
         x[i] = std::log(params[i].initial);
     }
+    {
+        std::vector<double> start(static_cast<std::size_t>(m));
+        if (!Residuals{&params, &data}.evaluate(x.data(), start.data()))
+            throw InputError("fit: the residuals at the initial parameter values are not finite"
+                             " (check the data, sigma_mg_per_L and the initial values)");
+    }
     auto* cost = new ceres::DynamicNumericDiffCostFunction<Residuals, ceres::CENTRAL>(new Residuals{&params, &data});
     cost->AddParameterBlock(p);
     cost->SetNumResiduals(m);
@@ -106,6 +135,7 @@ FitResult fitParameters(std::vector<FitParameter> params, const std::vector<FitD
     so.gradient_tolerance = 1e-14;
     so.logging_type = ceres::SILENT;
     ceres::Solver::Summary summary;
+    quietCeres();
     ceres::Solve(so, &problem, &summary);
 
     FitResult r;
@@ -212,6 +242,7 @@ int fitMain(int argc, char** argv)
         if (s == "-o" || s == "--output")
         {
             if (i + 1 >= argc) throw InputError("kinetics fit: -o needs a directory");
+            if (!dir.empty()) throw InputError("kinetics fit: option -o given twice");
             dir = argv[++i];
         }
         else if (s == "--no-plots") plots = false;
@@ -250,7 +281,7 @@ int fitMain(int argc, char** argv)
         }
         if (it.has("sigma_mg_per_L")) d.sigma = it.positive("sigma_mg_per_L", "mg/L");
         const std::string csvFile = rel(it.text("csv"));
-        const CsvTable table = readCsv(csvFile);
+        const CsvTable table = readCsv(csvFile, true);   // "nan" or empty: not measured
         const std::size_t tc = table.column("time_h", csvFile);
         const Case c = d.source.build(d.set);   // validates the set keys
         for (std::size_t col = 0; col < table.header.size(); ++col)
@@ -264,13 +295,25 @@ int fitMain(int argc, char** argv)
                 throw InputError(csvFile + ": column '" + h + "' is not time_h, TOC_mgC_per_L or <species>_mg_per_L of the mechanism");
             d.quantities.push_back(q);
             std::vector<double> v;
-            for (const auto& row : table.rows) v.push_back(row[col]);
+            for (std::size_t r = 0; r < table.rows.size(); ++r)
+            {
+                const double x = table.rows[r][col];
+                if (!std::isnan(x) && !(std::fabs(x) <= maxConcentration))   // noise may dip below 0
+                    throw InputError(csvFile + ": data row " + std::to_string(r + 1) + ": column '" + h
+                                     + "' expected a concentration from -" + num(maxConcentration) + " to " + num(maxConcentration)
+                                     + " mg/L (or nan: not measured), got " + num(x));
+                v.push_back(x);
+            }
             d.measured.push_back(v);
         }
-        for (const auto& row : table.rows)
+        const double tMax = c.duration / 3600.0;
+        for (std::size_t r = 0; r < table.rows.size(); ++r)
         {
-            if (row[tc] < 0) throw InputError(csvFile + ": time_h must be >= 0");
-            d.t.push_back(row[tc] * 3600.0);
+            const double t = table.rows[r][tc];
+            if (!(t >= 0 && t <= tMax))
+                throw InputError(csvFile + ": data row " + std::to_string(r + 1) + ": column 'time_h' expected a time from 0 to "
+                                 + num(tMax) + " h (the case's duration), got " + num(t));
+            d.t.push_back(t * 3600.0);
         }
         if (d.quantities.empty()) throw InputError(csvFile + ": no measured columns");
         Overrides o = d.set;
@@ -286,7 +329,7 @@ int fitMain(int argc, char** argv)
         const std::string s = o.text("scale_by_residual_variance", "true");
         if (s != "true" && s != "false") throw o.error("scale_by_residual_variance", "true or false");
         opt.scaleByResidualVariance = s == "true";
-        if (o.has("max_iterations")) opt.maxIterations = static_cast<int>(o.integer("max_iterations"));
+        if (o.has("max_iterations")) opt.maxIterations = static_cast<int>(o.integer("max_iterations", 1, 100000));
     }
 
     const FitResult r = fitParameters(params, data, opt);
@@ -323,7 +366,7 @@ int fitMain(int argc, char** argv)
     }
     os << "  points " << r.points << ", RMSE " << num(r.rmse, 4) << " mg/L, R^2 " << num(r.r2, 5) << ", chi2 " << num(r.chi2, 5)
        << (opt.scaleByResidualVariance ? " (errors scaled by chi2/(n-p))" : " (errors from the given sigma)") << '\n';
-    std::ofstream(dir + "/fit_summary.txt") << os.str();
+    writeTextFile(dir + "/fit_summary.txt", os.str());
     std::cout << os.str() << "  output: " << dir << "/\n";
     if (!plots) return 0;
 

@@ -3,9 +3,11 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <set>
 #include <string>
 #include <vector>
 
+#include "common/Checked.hpp"
 #include "common/Cli.hpp"
 #include "kinetics/Case.hpp"
 #include "kinetics/Corona.hpp"
@@ -165,21 +167,13 @@ struct Args
     std::string solver;
     bool noPlots = false, quiet = false, noSweep = false;
     std::string params, outputs;
-    double timeH = 0, changePercent = 0;
+    double timeH = 0, changePercent = 0;   // 0: not given (the case's value or the default)
 };
 
 double parseNumber(const std::string& opt, const std::string& v)
 {
-    try
-    {
-        std::size_t used = 0;
-        const double x = std::stod(v, &used);
-        if (used == v.size()) return x;
-    }
-    catch (const std::exception&)
-    {
-    }
-    throw InputError(opt + " expected a number, got '" + v + "'");
+    if (const auto x = parseFinite(v)) return *x;
+    throw InputError(opt + " expected a finite number, got '" + v + "'");
 }
 
 std::vector<std::string> splitCommas(const std::string& s)
@@ -202,9 +196,13 @@ std::vector<std::string> splitCommas(const std::string& s)
 Args parseArgs(int argc, char** argv, const std::string& cmd)
 {
     Args a;
+    std::set<std::string> seen;
     for (int i = 2; i < argc; ++i)
     {
         const std::string s = argv[i];
+        // an option given twice would silently replace the first value (--sweep and --set add up)
+        if (!s.empty() && s[0] == '-' && s != "--sweep" && s != "--set" && !seen.insert(s == "--output" ? "-o" : s).second)
+            throw InputError("kinetics " + cmd + ": option " + s + " given twice");
         auto value = [&]() -> std::string {
             if (i + 1 >= argc) throw InputError("kinetics " + cmd + ": option " + s + " needs a value");
             return argv[++i];
@@ -223,13 +221,27 @@ Args parseArgs(int argc, char** argv, const std::string& cmd)
         else if (s == "-q" || s == "--quiet") a.quiet = true;
         else if (s == "--params") a.params = value();
         else if (s == "--outputs") a.outputs = value();
-        else if (s == "--time-h") a.timeH = parseNumber(s, value());
-        else if (s == "--change-percent") a.changePercent = parseNumber(s, value());
+        else if (s == "--time-h")
+        {
+            a.timeH = parseNumber(s, value());
+            if (!(a.timeH > 0)) throw InputError("kinetics " + cmd + ": option --time-h expected a time above 0 [h], got " + argv[i]);
+        }
+        else if (s == "--change-percent")
+        {
+            a.changePercent = parseNumber(s, value());
+            if (!(a.changePercent > 0 && a.changePercent < 100))
+                throw InputError("kinetics " + cmd + ": option --change-percent expected a number above 0 and below 100 [%], got "
+                                 + argv[i]);
+        }
         else if (!s.empty() && s[0] == '-') throw InputError("kinetics " + cmd + ": unknown option '" + s + "' (see --help)");
         else a.positional.push_back(s);
     }
     if (a.positional.size() != 1)
         throw InputError("kinetics " + cmd + ": expected one input file (see procsim kinetics " + cmd + " --help)");
+    std::vector<std::string> setKeys;
+    for (const auto& kv : a.set) setKeys.push_back(kv.first);
+    rejectDuplicates(setKeys, "kinetics " + cmd, "--set key");
+    rejectDuplicates(a.sweeps, &SweepDim::key, "kinetics " + cmd, "--sweep key");
     return a;
 }
 
@@ -336,7 +348,7 @@ int main(int argc, char** argv)
         if (help || argc == 2) return std::cout << coronaHelp(), help ? 0 : 2;
         return coronaMain(argc, argv);
     }
-    std::cerr << "procsim kinetics: unknown command '" << cmd << "'\n" << mainHelp;
+    std::cerr << "procsim: kinetics: unknown command '" << cmd << "' (see procsim kinetics --help)\n";
     return 2;
 }
 

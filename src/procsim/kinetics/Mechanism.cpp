@@ -3,6 +3,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "common/Csv.hpp"
+
 namespace procsim::kinetics
 {
 
@@ -147,7 +149,8 @@ Mechanism Mechanism::fromYaml(const YamlInput& root)
         }
         x.order = static_cast<int>(std::round(order));
         x.k = r.number("k", rateUnit(x.order));
-        if (!(x.k >= 0)) throw r.error("k", "a rate constant >= 0 [" + rateUnit(x.order) + "]");
+        if (!(x.k >= 0 && x.k <= maxRateConstant))
+            throw r.error("k", "a rate constant >= 0 [" + rateUnit(x.order) + "] up to " + formatNumber(maxRateConstant));
         const std::string unit = r.text("units");
         if (orderOfRateUnit(unit) != x.order)
         {

@@ -11,6 +11,9 @@
 namespace procsim::kinetics
 {
 
+// Far above the diffusion limit (~1e10 L/mol/s): larger values are typing errors.
+constexpr double maxRateConstant = 1e15;
+
 struct Species
 {
     std::string name;

@@ -246,10 +246,7 @@ void writeRun(const Results& r, const Efficiency& e, const std::string& dir, boo
         put("carbon_balance_max_rel_error", maxCarbonError(r), "-");
         csv.close();
     }
-    {
-        std::ofstream txt(dir + "/summary.txt");
-        txt << summaryText(r, e);
-    }
+    writeTextFile(dir + "/summary.txt", summaryText(r, e));
     if (!plots) return;
     const std::string csvPath = dir + "/timeseries.csv";
     std::ostringstream gp;

@@ -7,6 +7,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "common/Checked.hpp"
 #include "common/Csv.hpp"
 #include "common/Plot.hpp"
 
@@ -47,7 +48,10 @@ std::vector<SweepRun> runSweep(const CaseSource& src, const Overrides& set, cons
             }
         combos = next;
     }
+    // every member is built (validated) and solved before anything is written
     std::vector<SweepRun> runs;
+    std::vector<Case> cases;
+    std::vector<std::string> labels;
     for (const auto& o : combos)
     {
         SweepRun run;
@@ -55,13 +59,21 @@ std::vector<SweepRun> runSweep(const CaseSource& src, const Overrides& set, cons
         for (const auto& [k, v] : o) run.label += (run.label.empty() ? "" : "_") + shortKey(k) + "=" + num(v);
         Overrides all = set;
         all.insert(all.end(), o.begin(), o.end());
-        Case c = src.build(all);
-        if (!solver.empty()) c.solver.method = solver;
-        run.results = runCase(c);
-        run.eff = efficiency(run.results);
+        cases.push_back(src.build(all));
+        if (!solver.empty()) cases.back().solver.method = solver;
+        labels.push_back(run.label);
+        runs.push_back(std::move(run));
+    }
+    rejectDuplicates(labels, "kinetics run: sweep", "member");
+    for (std::size_t i = 0; i < runs.size(); ++i)
+    {
+        runs[i].results = runCase(cases[i]);
+        runs[i].eff = efficiency(runs[i].results);
+    }
+    for (const auto& run : runs)
+    {
         writeRun(run.results, run.eff, dir + "/" + run.label, false);
         if (!quiet) std::cout << "--- " << run.label << '\n' << summaryText(run.results, run.eff);
-        runs.push_back(std::move(run));
     }
 
     // summary table: swept values, outputs at report times, efficiencies
@@ -143,6 +155,11 @@ std::vector<SensitivityRow> sensitivity(const CaseSource& src, const Overrides& 
     if (parameters.empty())
         for (const auto& r : base.mech.reactions) parameters.push_back(r.id);
     if (outputs.empty()) outputs = base.sensOutputs;
+    if (time > base.duration * (1 + 1e-12))
+    {
+        throw InputError("kinetics sensitivity: option --time-h " + formatNumber(time / 3600.0)
+                         + " is past the end of the run (" + formatNumber(base.duration / 3600.0) + " h)");
+    }
     if (time <= 0) time = base.sensTime > 0 ? base.sensTime : base.duration;
     if (change <= 0) change = base.sensChange;
     const Results r0 = runCase(base);

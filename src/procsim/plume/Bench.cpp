@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "common/Csv.hpp"
 #include "plume/Eulerian.hpp"
 
 using namespace procsim::plume;
@@ -140,10 +141,12 @@ int main(int argc, char** argv)
         for (int i = 0; i < nx; ++i) s.add(g.xc(i), g.zc(i, 0, k), t.c[g.idx(i, 0, k)]);
     if (!write.empty())
     {
-        std::ofstream out(write);
+        OutputFile file(write);
+        std::ostream& out = file.out();
         out.precision(12);
         for (int k = 0; k < nz; ++k)
             for (int i = 0; i < nx; ++i) out << g.xc(i) << ' ' << g.zc(i, 0, k) << ' ' << t.c[g.idx(i, 0, k)] << '\n';
+        file.close();
     }
     std::printf("grid %d x %d (h = %g), %ld steps of %.6g s (limit %.6g s), wall %.3f s, "
                 "%.1f million cell-updates/s, relative L2 error %.4e\n",

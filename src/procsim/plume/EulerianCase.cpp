@@ -11,6 +11,7 @@
 #include <sstream>
 #include <thread>
 
+#include "common/Checked.hpp"
 #include "common/Cli.hpp"
 #include "common/Csv.hpp"
 #include "common/Plot.hpp"
@@ -57,11 +58,17 @@ const char* kHelp =
     "ground_mean.csv/.png, receptors_24h.png, C.pvd + vts/*.vts (ParaView); and\n"
     "table.csv (run mean and highest 24-h average per receptor and scenario).\n";
 
+constexpr long maxStepsPerHour = 10000000;
+constexpr double maxCellUpdates = 1e12;   // ~6 h at ~5e7 cell updates per second
+constexpr double bytesPerCell = 400;      // fields, fluxes and the implicit vertical solve
+
 } // namespace
 
 std::unique_ptr<TerrainGrid> EulerianCase::makeGrid() const
 {
     const double w = terrain.ncols * terrain.cell, h = terrain.nrows * terrain.cell;
+    checkMemory(std::floor(w / cellSize + 1e-9) * std::floor(h / cellSize + 1e-9) * levels, bytesPerCell, file,
+                "a grid of " + formatNumber(cellSize, 3) + " m cells with " + std::to_string(levels) + " levels");
     const int nx = std::max(2, static_cast<int>(std::floor(w / cellSize + 1e-9)));
     const int ny = std::max(2, static_cast<int>(std::floor(h / cellSize + 1e-9)));
     const double highest = *std::max_element(terrain.z.begin(), terrain.z.end());
@@ -88,8 +95,7 @@ EulerianCase loadEulerianCase(const std::string& path)
         c.cellSize = g.has("cell_size_m") ? g.positive("cell_size_m", "m") : c.cellSize;
         if (g.has("levels"))
         {
-            c.levels = static_cast<int>(g.integer("levels"));
-            if (c.levels < 1) throw g.error("levels", "an integer >= 1");
+            c.levels = static_cast<int>(g.integer("levels", 1, 1000));
         }
         if (g.has("top_above_highest_m")) c.topAboveHighest = g.positive("top_above_highest_m", "m");
         c.stretching = g.number("stretching", c.stretching);
@@ -146,8 +152,7 @@ EulerianCase loadEulerianCase(const std::string& path)
         o.rejectUnknown({"vts_every_h", "background_ug_m3", "standard_24h_ug_m3", "measured_24h"});
         if (o.has("vts_every_h"))
         {
-            c.vtsEveryHours = static_cast<int>(o.integer("vts_every_h"));
-            if (c.vtsEveryHours < 0) throw o.error("vts_every_h", "an integer >= 0 (0 = none)");
+            c.vtsEveryHours = static_cast<int>(o.integer("vts_every_h", 0, 1000000));   // 0 = none
         }
         c.backgroundUgM3 = o.has("background_ug_m3") ? o.nonNegative("background_ug_m3", "ug/m3") : 0.0;
         if (o.has("standard_24h_ug_m3")) c.standardUgM3 = o.positive("standard_24h_ug_m3", "ug/m3");
@@ -180,6 +185,7 @@ EulerianCase loadEulerianCase(const std::string& path)
             s.rejectUnknown({"name", "K_H_m2_s", "K_V_m2_s", "reduction"});
             Scenario sc;
             sc.name = s.text("name");
+            if (sc.name.empty()) throw s.error("name", "a non-empty name (it names a directory)");
             for (char ch : sc.name)
                 if (!(std::isalnum(static_cast<unsigned char>(ch)) || ch == '_' || ch == '-'))
                     throw s.error("name", "letters, digits, '_' or '-' (it names a directory)");
@@ -191,6 +197,7 @@ EulerianCase loadEulerianCase(const std::string& path)
         }
     }
     if (c.scenarios.empty()) c.scenarios.push_back({"base", kH, kV, 0.0});
+    rejectDuplicates(c.scenarios, &Scenario::name, path + ": key 'scenarios'", "scenario name");
     return c;
 }
 
@@ -320,11 +327,12 @@ ScenarioResult runScenario(const EulerianCase& cs, const TerrainGrid& g, const W
         t.setFlow(wind.flow(m.speed, m.directionFrom));
         const double limit = t.stableDt();
         const double dt0 = cs.dt > 0 ? cs.dt : cs.cflFraction * limit;
-        const int n = std::max(1, static_cast<int>(std::ceil(3600.0 / dt0 - 1e-9)));
+        const long n = stepCount(3600.0, dt0, maxStepsPerHour, cs.file + ": key 'time.dt_s'",
+                                 "an hour in steps of " + formatNumber(dt0, 3) + " s", "use a larger dt_s or 'auto'");
         const double dt = 3600.0 / n;
         res.dtMin = std::min(res.dtMin, dt);
         res.dtMax = std::max(res.dtMax, dt);
-        for (int s = 0; s < n; ++s)
+        for (long s = 0; s < n; ++s)
         {
             t.step(dt);
             for (std::size_t r = 0; r < nr; ++r)
@@ -404,7 +412,11 @@ void writeScenarioOutputs(const EulerianCase& cs, const TerrainGrid& g, const Sc
     }
     // gnuplot inputs for the map (blank line after each grid row)
     {
-        std::ofstream gm(dir + "/map_ground.dat");
+        OutputFile gmFile(dir + "/map_ground.dat"), sfFile(dir + "/map_sources.dat"),
+            rfFile(dir + "/map_receptors.dat");
+        std::ostream& gm = gmFile.out();
+        std::ostream& sf = sfFile.out();
+        std::ostream& rf = rfFile.out();
         for (int j = 0; j < g.ny; ++j)
         {
             for (int i = 0; i < g.nx; ++i)
@@ -412,12 +424,13 @@ void writeScenarioOutputs(const EulerianCase& cs, const TerrainGrid& g, const Sc
                    << res.groundMean[g.col(i, j)] << '\n';
             gm << '\n';
         }
-        std::ofstream sf(dir + "/map_sources.dat");
         for (const auto& s : cs.sources)
             sf << s.x << ' ' << s.y << ' ' << std::max(0.5 * s.lx, 0.5 * g.dx / 4) << ' '
                << std::max(0.5 * s.ly, 0.5 * g.dy / 4) << ' ' << s.name << '\n';
-        std::ofstream rf(dir + "/map_receptors.dat");
         for (const auto& r : cs.receptors) rf << r.x << ' ' << r.y << ' ' << r.name << '\n';
+        gmFile.close();
+        sfFile.close();
+        rfFile.close();
     }
     std::ostringstream gp;
     gp << "set termoption noenhanced\nset size ratio -1\nset xlabel 'x (east) [m]'\nset ylabel 'y (north) [m]'\n"
@@ -512,8 +525,13 @@ int eulerianMain(int argc, char** argv)
     const TerrainGrid& g = *grid;
     checkReceptors(g, cs.receptors);
     for (const auto& sc : cs.scenarios) distributeSources(g, cs.sources, sc.reduction);   // validates
-    const int hours = hoursLimit > 0 ? std::min<int>(hoursLimit, static_cast<int>(cs.met.hours.size()))
-                                     : static_cast<int>(cs.met.hours.size());
+    const int metHours = static_cast<int>(cs.met.hours.size());
+    if (hoursLimit > metHours)
+    {
+        throw InputError("plume eulerian: option --hours " + std::to_string(hoursLimit) + " asks for more than the "
+                         + std::to_string(metHours) + " hours of meteorology of " + cs.file);
+    }
+    const int hours = hoursLimit > 0 ? hoursLimit : metHours;
     const WindModel wind(g, cs.exponent, cs.zRef);
 
     // stability limit over all hours and scenarios (an explicit dt must satisfy it)
@@ -547,6 +565,20 @@ int eulerianMain(int argc, char** argv)
            << limitHour << "; Adams-Bashforth needs dt <= 1/(4 sum K/dx^2 + sum|F|/V)"
            << (cs.implicitVertical ? ", vertical diffusion implicit)" : ")");
         throw InputError(os.str());
+    }
+
+    // the work the run needs: refuse what would not finish in reasonable time
+    const double dtRun = cs.dt > 0 ? cs.dt : cs.cflFraction * limit;
+    const long perHour = stepCount(3600.0, dtRun, maxStepsPerHour, cs.file + ": key 'time.dt_s'",
+                                   "an hour in steps of " + formatNumber(dtRun, 3) + " s", "use a larger dt_s or 'auto'");
+    const double updates = static_cast<double>(g.nx) * g.ny * g.nz * perHour * hours * cs.scenarios.size();
+    if (updates > maxCellUpdates)
+    {
+        throw InputError(cs.file + ": the run needs about " + fmt(updates, 2) + " cell updates (grid "
+                         + std::to_string(g.nx) + " x " + std::to_string(g.ny) + " x " + std::to_string(g.nz) + ", "
+                         + std::to_string(perHour) + " steps per hour, " + std::to_string(hours) + " h, "
+                         + std::to_string(cs.scenarios.size()) + " scenarios; limit " + fmt(maxCellUpdates, 2)
+                         + "); use a coarser grid.cell_size_m, fewer --hours or a larger dt_s");
     }
 
     std::cout << "procsim plume eulerian: " << casePath << "\n  grid " << g.nx << " x " << g.ny

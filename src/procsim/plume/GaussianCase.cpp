@@ -77,7 +77,7 @@ GaussianSetup parseGaussianSetup(const YamlInput& in)
     {
         const YamlInput d = in.child("deposition");
         d.rejectUnknown({"velocity_m_s"});
-        o.depositionVelocity = d.nonNegative("velocity_m_s", "m/s");
+        o.depositionVelocity = d.within("velocity_m_s", 0, 1, "m/s");
     }
     if (in.has("dispersion"))
     {
@@ -87,8 +87,8 @@ GaussianSetup parseGaussianSetup(const YamlInput& in)
         if (m == "constant_k")
         {
             o.constantK = true;
-            o.kH = d.positive("K_H_m2_s", "m2/s");
-            o.kV = d.positive("K_V_m2_s", "m2/s");
+            o.kH = d.within("K_H_m2_s", 1e-6, 1e6, "m2/s");
+            o.kV = d.within("K_V_m2_s", 1e-6, 1e6, "m2/s");
         }
         else if (m != "briggs_rural")
         {

@@ -39,7 +39,10 @@ MetSeries readMet(const std::string& path, bool full)
     if (haveStability) cst = t.column("stability", path);
 
     MetSeries m;
-    m.firstHour = static_cast<int>(std::lround(t.rows[0][ch]));
+    const double first = t.rows[0][ch];
+    if (!(first >= 0 && first <= 1e8 && first == std::floor(first)))
+        throw InputError(path + ": column 'hour' expected a whole hour from 0 to 1e8, got " + formatNumber(first));
+    m.firstHour = static_cast<int>(first);
     for (std::size_t r = 0; r < t.rows.size(); ++r)
     {
         const auto& row = t.rows[r];
@@ -57,7 +60,7 @@ MetSeries readMet(const std::string& path, bool full)
         h.speed = row[cs];
         h.directionFrom = row[cd];
         const std::string at = path + ": hour " + std::to_string(expected) + ": ";
-        if (!(h.speed >= 0)) throw InputError(at + "wind_speed_m_s expected >= 0");
+        if (!(h.speed >= 0 && h.speed <= 100)) throw InputError(at + "wind_speed_m_s expected 0..100");
         if (!(h.directionFrom >= 0 && h.directionFrom <= 360))
             throw InputError(at + "wind_direction_deg expected 0..360");
         if (full)
@@ -65,7 +68,10 @@ MetSeries readMet(const std::string& path, bool full)
             h.temperatureC = row[ct];
             h.mixingHeight = row[cm];
             h.cloudOktas = row[cc];
-            if (!(h.mixingHeight > 0)) throw InputError(at + "mixing_height_m expected > 0");
+            if (!(h.temperatureC >= -90 && h.temperatureC <= 60))
+                throw InputError(at + "temperature_C expected -90..60");
+            if (!(h.mixingHeight > 0 && h.mixingHeight <= 10000))
+                throw InputError(at + "mixing_height_m expected > 0 and up to 10000");
             if (!(h.cloudOktas >= 0 && h.cloudOktas <= 8))
                 throw InputError(at + "cloud_cover_oktas expected 0..8");
         }

@@ -11,6 +11,7 @@
 #include <sstream>
 #include <thread>
 
+#include "common/Checked.hpp"
 #include "common/Cli.hpp"
 #include "common/Csv.hpp"
 #include "common/Plot.hpp"
@@ -21,6 +22,8 @@ namespace fs = std::filesystem;
 
 namespace procsim::plume
 {
+
+constexpr long maxYears = 100000;   // synthetic years: ~10 minutes per 1000 on one thread
 
 namespace
 {
@@ -220,17 +223,18 @@ int monteCarloMain(int argc, char** argv)
     long years = 50;
     if (in.has("years"))
     {
-        years = in.integer("years");
-        if (years < 1) throw in.error("years", "an integer >= 1");
+        years = in.integer("years", 1, maxYears);
     }
     if (yearsOpt > 0) years = yearsOpt;
+    if (years > maxYears)
+        throw InputError("plume montecarlo: " + std::to_string(years) + " synthetic years asked for (limit "
+                         + std::to_string(maxYears) + ")");
     const double w = in.number("weighting", 0.5);
     if (!(w >= 0 && w < 1)) throw in.error("weighting", "a number in [0, 1)");
     unsigned long long seed = 2001;
     if (in.has("seed"))
     {
-        const long s = in.integer("seed");
-        if (s < 0) throw in.error("seed", "an integer >= 0");
+        const long s = in.integer("seed", 0, 2147483647L);
         seed = static_cast<unsigned long long>(s);
     }
     if (haveSeed) seed = seedOpt;
@@ -259,6 +263,8 @@ int monteCarloMain(int argc, char** argv)
     }
     const GaussianModel model(setup.sources, setup.options);
     const std::size_t nr = setup.receptors.size();
+    checkMemory(static_cast<double>(years) * 365 * static_cast<double>(nr), sizeof(double), casePath,
+                std::to_string(years) + " synthetic years of daily values at " + std::to_string(nr) + " receptors");
     const unsigned threads = static_cast<unsigned>(
         threadsOpt > 0 ? threadsOpt : std::max(1u, std::thread::hardware_concurrency()));
 

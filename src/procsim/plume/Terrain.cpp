@@ -3,11 +3,15 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <set>
 #include <sstream>
 
+#include "common/Checked.hpp"
 #include "common/Cli.hpp"
+#include "common/Csv.hpp"
 
 namespace procsim::plume
 {
@@ -42,6 +46,8 @@ std::string lower(std::string s)
 
 EsriGrid readEsriGrid(const std::string& path)
 {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) throw InputError(path + ": is a directory, expected a terrain grid file");
     std::ifstream in(path);
     if (!in) throw InputError(path + ": cannot be read (missing terrain file?)");
 
@@ -50,6 +56,7 @@ EsriGrid readEsriGrid(const std::string& path)
     double nodata = -9999;
     bool centre = false;
     bool haveX = false, haveY = false, haveCell = false;
+    std::set<std::string> seenKeys;
     std::string line;
     int lineNo = 0;
     std::streampos dataStart = in.tellg();
@@ -69,15 +76,30 @@ EsriGrid readEsriGrid(const std::string& path)
             dataLine = lineNo;
             break;
         }
-        double value;
-        if (!(ss >> value))
+        std::string text, extra;
+        ss >> text;
+        const auto parsed = parseFinite(text);
+        if (!parsed || (ss >> extra))
         {
             throw InputError(path + ": line " + std::to_string(lineNo) + ": header key '" + key
-                             + "' expected a number");
+                             + "' expected a finite number, got '" + text + (extra.empty() ? "" : " " + extra) + "'");
         }
+        const double value = *parsed;
         const std::string k = lower(key);
-        if (k == "ncols") g.ncols = static_cast<int>(value);
-        else if (k == "nrows") g.nrows = static_cast<int>(value);
+        if (!seenKeys.insert(k).second)
+        {
+            throw InputError(path + ": line " + std::to_string(lineNo) + ": header key '" + key + "' is given twice");
+        }
+        if (k == "ncols" || k == "nrows")
+        {
+            const auto n = parseInteger(text, 2, 100000);
+            if (!n)
+            {
+                throw InputError(path + ": line " + std::to_string(lineNo) + ": header key '" + key
+                                 + "' expected a whole number from 2 to 100000, got '" + text + "'");
+            }
+            (k == "ncols" ? g.ncols : g.nrows) = static_cast<int>(*n);
+        }
         else if (k == "xllcorner") { g.xll = value; haveX = true; }
         else if (k == "yllcorner") { g.yll = value; haveY = true; }
         else if (k == "xllcenter") { g.xll = value; haveX = true; centre = true; }
@@ -94,7 +116,9 @@ EsriGrid readEsriGrid(const std::string& path)
     if (g.ncols < 2 || g.nrows < 2)
         throw InputError(path + ": header expected ncols and nrows >= 2 (ESRI ASCII grid)");
     if (!haveX || !haveY) throw InputError(path + ": header expected xllcorner and yllcorner");
-    if (!haveCell || !(g.cell > 0)) throw InputError(path + ": header expected cellsize > 0");
+    if (!haveCell || !(g.cell > 0 && g.cell <= 1e5)) throw InputError(path + ": header expected cellsize > 0 and up to 1e5 m");
+    if (!(std::fabs(g.xll) <= 1e7 && std::fabs(g.yll) <= 1e7))
+        throw InputError(path + ": header expected xllcorner and yllcorner within 1e7 m of the origin");
     if (centre)
     {
         g.xll -= 0.5 * g.cell;
@@ -102,6 +126,8 @@ EsriGrid readEsriGrid(const std::string& path)
     }
     if (dataLine == 0) throw InputError(path + ": no elevation rows after the header");
 
+    checkMemory(static_cast<double>(g.ncols) * g.nrows, 2 * sizeof(double), path, "a terrain grid of "
+                + std::to_string(g.ncols) + " x " + std::to_string(g.nrows) + " cells");
     in.clear();
     in.seekg(dataStart);
     lineNo = dataLine - 1;
@@ -118,13 +144,14 @@ EsriGrid readEsriGrid(const std::string& path)
         while (ss >> tok)
         {
             any = true;
-            char* end = nullptr;
-            const double v = std::strtod(tok.c_str(), &end);
-            if (end == tok.c_str() || *end != '\0' || !std::isfinite(v))
+            const auto parsed = parseFinite(tok);
+            const bool nodataCell = parsed && haveNodata && *parsed == nodata;
+            if (!parsed || (!nodataCell && !(*parsed >= -1000 && *parsed <= 10000)))
             {
                 throw InputError(path + ": line " + std::to_string(lineNo)
-                                 + ": expected an elevation [m], got '" + tok + "'");
+                                 + ": expected an elevation from -1000 to 10000 m, got '" + tok + "'");
             }
+            const double v = *parsed;
             if (haveNodata && v == nodata)
             {
                 throw InputError(path + ": line " + std::to_string(lineNo)
@@ -160,8 +187,8 @@ EsriGrid readEsriGrid(const std::string& path)
 
 void writeEsriGrid(const std::string& path, const EsriGrid& g)
 {
-    std::ofstream out(path);
-    if (!out) throw InputError(path + ": cannot be written");
+    OutputFile file(path);
+    std::ostream& out = file.out();
     out << "ncols " << g.ncols << "\nnrows " << g.nrows << "\nxllcorner " << g.xll
         << "\nyllcorner " << g.yll << "\ncellsize " << g.cell << "\nNODATA_value -9999\n";
     out << std::fixed << std::setprecision(2);
@@ -170,6 +197,7 @@ void writeEsriGrid(const std::string& path, const EsriGrid& g)
         for (int c = 0; c < g.ncols; ++c) out << (c ? " " : "") << g.at(c, r);
         out << '\n';
     }
+    file.close();
 }
 
 } // namespace procsim::plume

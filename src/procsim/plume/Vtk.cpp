@@ -1,10 +1,10 @@
 #include "plume/Vtk.hpp"
 
 #include <algorithm>
-#include <fstream>
 #include <iomanip>
 
 #include "common/Cli.hpp"
+#include "common/Csv.hpp"
 #include "plume/Eulerian.hpp"
 
 namespace procsim::plume
@@ -13,8 +13,8 @@ namespace procsim::plume
 void writeVts(const std::string& path, const TerrainGrid& g, const std::string& fieldName,
               const std::vector<double>& v)
 {
-    std::ofstream out(path);
-    if (!out) throw InputError(path + ": cannot be written");
+    OutputFile file(path);
+    std::ostream& out = file.out();
     const int nx = g.nx, ny = g.ny, nz = g.nz;
     out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"StructuredGrid\" version=\"0.1\" "
            "byte_order=\"LittleEndian\">\n<StructuredGrid WholeExtent=\"0 "
@@ -52,16 +52,18 @@ void writeVts(const std::string& path, const TerrainGrid& g, const std::string& 
     out << std::setprecision(6);
     for (std::size_t n = 0; n < v.size(); ++n) out << v[n] << ((n % 8 == 7) ? '\n' : ' ');
     out << "\n</DataArray>\n</CellData>\n</Piece>\n</StructuredGrid>\n</VTKFile>\n";
+    file.close();
 }
 
 void writePvd(const std::string& path, const std::vector<std::pair<double, std::string>>& entries)
 {
-    std::ofstream out(path);
-    if (!out) throw InputError(path + ": cannot be written");
+    OutputFile file(path);
+    std::ostream& out = file.out();
     out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n";
     for (const auto& e : entries)
         out << "  <DataSet timestep=\"" << e.first << "\" file=\"" << e.second << "\"/>\n";
     out << "</Collection>\n</VTKFile>\n";
+    file.close();
 }
 
 } // namespace procsim::plume
