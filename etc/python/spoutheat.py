@@ -219,7 +219,10 @@ def summarize(g, window, lines, case='.', pictures=True):
     lines.append('  energy: heat given by the gas = heat received by the particles to %.1e; '
                  'whole-run balance closes to %.1e of the particles\' heat' % (pairwise, balance))
     if pictures:
-        shown = [n for t, n in times if t > 0][-3:]   # 0/T is the uniform start
+        # at a third, two thirds and the end of the run (0/T is the uniform start)
+        later = [(t, n) for t, n in times if t > 0]
+        shown = sorted({min(later, key=lambda tn: abs(tn[0] - f * end))[1]
+                        for f in (1 / 3, 2 / 3, 1)}, key=float)
         lines.append('  temperature pictures: ' + ' '.join(snapshots(g, shown, case)))
     lines.append('  data: heatHistory.csv heatProfiles.csv heatHeight.csv; plots: '
                  'particleTemperature.png heatTransfer.png')
