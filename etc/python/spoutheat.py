@@ -118,12 +118,13 @@ def slope(rows, column, lo, hi):
 
 
 def plot_history(rows, png):
+    """True if drawn."""
     with open('heatHistory.csv', 'w') as f:
         f.write('time [s],mean particle temperature spout [K],'
                 'mean particle temperature downcomer [K],mean particle temperature [K]\n')
         for r in rows:
             f.write('%.6g,%.8g,%.8g,%.8g\n' % r)
-    sc.plot(png, '''
+    return sc.plot(png, '''
 set title "Mean particle temperature (spout: between the plates and above them)"
 set xlabel "time [s]"
 set ylabel "temperature [K]"
@@ -137,11 +138,12 @@ plot "heatHistory.csv" skip 1 using 1:2 with linespoints lw 2 title "spout", \\
 
 
 def plot_profiles(profile, png):
+    """True if drawn."""
     with open('heatProfiles.csv', 'w') as f:
         f.write('x/R_d,h [W/m2/K],Re,samples\n')
         for r in profile:
             f.write('%.4f,%.6g,%.6g,%d\n' % r)
-    sc.plot(png, '''
+    return sc.plot(png, '''
 set multiplot layout 2,1 title "Heat-transfer coefficient and Reynolds number, z/R_d %g-%g (Fig 12)"
 set grid
 set datafile separator ","
@@ -184,13 +186,14 @@ def summarize(g, window, lines, case='.', pictures=True):
     last = rows[-1]
     pairwise, balance = hc.energy_balance(rows)
     history = particle_history(g, case)
-    plot_history(history, 'particleTemperature.png')
+    plots = ['particleTemperature.png'] if plot_history(history, 'particleTemperature.png') else []
     times = write_times(case)
     end = times[-1][0]
     averaged = [n for t, n in times if t >= end - window - 1e-9 and t > 0]
     centres = sc.read_field(os.path.join(case, '0', 'C'))
     profile, means = band_profiles(g, centres, averaged, case)
-    plot_profiles(profile, 'heatTransfer.png')
+    if plot_profiles(profile, 'heatTransfer.png'):
+        plots.append('heatTransfer.png')
     heights = height_profiles(g, centres, averaged, case)
     with open('heatHeight.csv', 'w') as f:
         f.write('z/R_d,h spout [W/m2/K],h downcomer [W/m2/K]\n')
@@ -209,13 +212,19 @@ def summarize(g, window, lines, case='.', pictures=True):
                  'average %.2f K in the spout, %.2f K in the downcomer; gas leaves at %.2f K'
                  % (g.Tin, g.T0, last['time [s]'], out['Tp_spout'], out['Tp_downcomer'],
                     out['T_outlet']))
-    lines.append('  z/R_d %g-%g, %d write times: Re %.0f (spout), %.0f (downcomer); '
-                 'h %.1f, %.1f W/m2/K' % (BAND + (len(averaged), out['Re_spout'],
-                                                  out['Re_downcomer'], out['h_spout'],
-                                                  out['h_downcomer'])))
-    lines.append('  h along the band: %+.2f (spout) and %+.2f (downcomer) W/m2/K per R_d of '
-                 'height; across the downcomer h spans %.0f %% of its mean'
-                 % (out['dh_dz_spout'], out['dh_dz_downcomer'], 100 * out['h_downcomer_spread']))
+    if profile:
+        lines.append('  z/R_d %g-%g, %d write times: Re %.0f (spout), %.0f (downcomer); '
+                     'h %.1f, %.1f W/m2/K' % (BAND + (len(averaged), out['Re_spout'],
+                                                      out['Re_downcomer'], out['h_spout'],
+                                                      out['h_downcomer'])))
+        lines.append('  h along the band: %+.2f (spout) and %+.2f (downcomer) W/m2/K per R_d '
+                     'of height; across the downcomer h spans %.0f %% of its mean'
+                     % (out['dh_dz_spout'], out['dh_dz_downcomer'],
+                        100 * out['h_downcomer_spread']))
+    else:
+        lines.append('  z/R_d %g-%g: no particles there at the %d write times of the window '
+                     '(bed below it, or the window too short): no h and Re profiles'
+                     % (BAND + (len(averaged),)))
     lines.append('  energy: heat given by the gas = heat received by the particles to %.1e; '
                  'whole-run balance closes to %.1e of the particles\' heat' % (pairwise, balance))
     if pictures:
@@ -225,5 +234,5 @@ def summarize(g, window, lines, case='.', pictures=True):
                         for f in (1 / 3, 2 / 3, 1)}, key=float)
         lines.append('  temperature pictures: ' + ' '.join(snapshots(g, shown, case)))
     lines.append('  data: heatHistory.csv heatProfiles.csv heatHeight.csv; plots: '
-                 'particleTemperature.png heatTransfer.png')
+                 + (' '.join(plots) or 'none'))
     return out

@@ -79,14 +79,23 @@ def read_vtp_array(path, name):
 
 
 def plot(png, script, size=(900, 600)):
-    """Run a gnuplot script that draws into png (pngcairo, or png if absent)."""
+    """Run a gnuplot script that draws into png (pngcairo, or png if absent).
+    If gnuplot cannot draw it (e.g. no finite point), say so in one line and
+    go on: the data files are written either way.  True if drawn."""
     terminal = 'set terminal pngcairo size %d,%d font "Sans,11"\n' % size
     full = terminal + 'set output "%s"\n' % png + script
     result = subprocess.run(['gnuplot'], input=full, text=True,
                             capture_output=True)
     if result.returncode != 0 or not os.path.isfile(png):
         full = 'set terminal png size %d,%d\nset output "%s"\n' % (size + (png,)) + script
-        subprocess.run(['gnuplot'], input=full, text=True, check=True)
+        result = subprocess.run(['gnuplot'], input=full, text=True, capture_output=True)
+    if result.returncode != 0:
+        if os.path.isfile(png):
+            os.remove(png)               # gnuplot leaves an empty file behind
+        why = [line.strip() for line in result.stderr.splitlines() if line.strip()]
+        print('plot %s not drawn: gnuplot: %s' % (png, why[-1] if why else 'failed'))
+        return False
+    return True
 
 
 class Checks:
