@@ -412,3 +412,56 @@ decomposePar > log.decomposePar 2>&1''' % (ranks, ranks)])
                   % (who, now, end, rate, (end - now) * rate / 60), flush=True)
     if proc.returncode != 0:
         sys.exit('%s: spoutFoam failed, see log.spoutFoam' % who)
+
+
+def run_particles(case='.'):
+    """(number, source) of the particles a run had at its start: counted in
+    its first particles/*.vtp, else the first row of postProcessing/
+    coupling.csv; (None, None) before a run."""
+    import spoutlab_case as sc
+    folder = os.path.join(case, 'particles')
+    if os.path.isdir(folder):
+        vtps = sorted((f for f in os.listdir(folder)
+                       if f.startswith('particles_') and f.endswith('.vtp')),
+                      key=lambda f: float(f[len('particles_'):-4]))
+        if vtps:
+            path = os.path.join(folder, vtps[0])
+            return len(sc.read_vtp_points(path)), os.path.join('particles', vtps[0])
+    if os.path.isfile(os.path.join(case, 'postProcessing', 'coupling.csv')):
+        rows = sc.read_coupling_log(case)
+        if rows:
+            return int(rows[0]['particles']), 'postProcessing/coupling.csv'
+    return None, None
+
+
+def inlet_schedule(g, case='.'):
+    """The superficial velocity u_s against time as constant/inletVelocity
+    sets it: [(u_s, t_from, t_to)], t_to None for the last; the slot
+    velocity of the table times Wi/W."""
+    text = open(os.path.join(case, 'constant', 'inletVelocity')).read()
+    table = [(float(t), float(v) * g.Wi / g.W) for t, v in
+             re.findall(r'\(\s*([-+.\deE]+)\s*\(\s*\S+\s+\S+\s+([-+.\deE]+)\s*\)\s*\)', text)]
+    steps = []
+    for t, u in table:
+        if steps and abs(steps[-1][0] - u) < 1e-9:
+            steps[-1][2] = t
+        else:
+            steps.append([u, t, t])
+    return [(u, t0, t1 if k + 1 < len(steps) else None)
+            for k, (u, t0, t1) in enumerate(steps)]
+
+
+def describe_schedule(steps):
+    """'2 m/s' or '2 m/s for 0-0.1 s, then 1.5 m/s from 0.15 s'."""
+    if len(steps) == 1:
+        return '%.3g m/s' % steps[0][0]
+    parts = ['%.3g m/s for %g-%g s' % (u, t0, t1) for u, t0, t1 in steps[:-1]]
+    return ', '.join(parts) + ', then %.3g m/s from %g s (linear ramps between)' % (
+        steps[-1][0], steps[-1][1])
+
+
+def average_start(case='.'):
+    """timeStart of the averages function object of system/controlDict."""
+    text = open(os.path.join(case, 'system', 'controlDict')).read()
+    m = re.search(r'\baverages\s*\{[^}]*?\btimeStart\s+([-+.\deE]+)\s*;', text, re.S)
+    return float(m.group(1)) if m else None
