@@ -9,6 +9,7 @@
 #include "OStringStream.H"
 
 #include <algorithm>
+#include <cmath>
 #include <iomanip>
 #include <sstream>
 
@@ -50,6 +51,21 @@ std::vector<Vec3> toVec3(const Foam::vectorField& field)
     std::vector<Vec3> out(field.size());
     forAll(field, i) out[i] = Vec3{field[i].x(), field[i].y(), field[i].z()};
     return out;
+}
+
+bool finite(double x) { return std::isfinite(x); }
+bool finite(const Foam::vector& v)
+{
+    return std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z());
+}
+bool finite(const Vec3& v)
+{
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+std::string format(const Vec3& v)
+{
+    return "(" + format(v.x) + " " + format(v.y) + " " + format(v.z) + ")";
 }
 
 // A cell field the coupling computes and writes with the gas fields.
@@ -94,6 +110,7 @@ DemCoupling::DemCoupling
     couplingInterval_(dict_.get<Foam::label>("couplingInterval")),
     deleteLost_(false),
     maxCo_(dict_.getOrDefault<Foam::scalar>("maxCo", 1.0)),
+    lastWritten_(mesh.time().timeName()),
     locator_(mesh),
     vtk_(mesh.time().globalPath()/"particles", "particles"),
     Ksl_
@@ -311,6 +328,19 @@ void DemCoupling::checkTimeSteps() const
 VoidFractionResult DemCoupling::mapParticles()
 {
     dem_->gather(particles_);
+    // every rank holds all particles, so every rank finds the same one
+    for (const Particle& p : particles_)
+    {
+        if (!finite(p.x) || !finite(p.v))
+        {
+            stopIfAnyRank
+            (
+                "non-finite position or velocity of particle "
+              + std::to_string(p.id) + " (x " + format(p.x) + ", v "
+              + format(p.v) + ")"
+            );
+        }
+    }
     VoidFractionResult vf =
         voidFractionModel_->compute(locator_, particles_, centreCells_);
 
@@ -358,6 +388,7 @@ VoidFractionResult DemCoupling::mapParticles()
     Foam::scalarField& field = voidfraction_.primitiveFieldRef();
     forAll(field, celli) field[celli] = eps[celli];
     voidfraction_.correctBoundaryConditions();
+    checkField(voidfraction_);
     return vf;
 }
 
@@ -375,6 +406,8 @@ void DemCoupling::exchange(const VoidFractionResult& vf)
     (
         locator_, particles_, vf, GasCellFields{U, gradPv, eps}, gas_, g_
     );
+    // before the forces reach LIGGGHTS or the log
+    checkParticles("fluid force", ex.totalForce);
 
     forAll(Ksl_, celli)
     {
@@ -477,6 +510,7 @@ void DemCoupling::solveEnergy()
 {
     if (!heat_) return;
     heat_->solveGas();
+    checkField(heat_->T());
     transferHeat();
 }
 
@@ -486,8 +520,104 @@ void DemCoupling::transferHeat()
     if (!heat_) return;
     // this rank's share, like the forces
     heatFlux_ = heat_->particleHeatFlux(particles_, vf_.map);
+    checkParticles("heat flux", heatFlux_);
     dem_->setHeatFluxes(heatFlux_);
     logHeat();
+}
+
+
+// --- guards against NaN and Inf --------------------------------------------
+// Each check is one pass over this rank's values and one integer reduction,
+// so every rank reaches the same decision; the first offending rank's
+// description goes to all.  Nothing of the failing step is written: the last
+// good state is the latest time directory, where 'startFrom latestTime'
+// restarts.
+
+void DemCoupling::stopIfAnyRank(const std::string& found) const
+{
+    int rank = 0, nProcs = 1;
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    MPI_Comm_size(MPI_COMM_WORLD, &nProcs);
+    int first = found.empty() ? nProcs : rank;
+    MPI_Allreduce(MPI_IN_PLACE, &first, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD);
+    if (first == nProcs) return;
+
+    int n = int(found.size());
+    MPI_Bcast(&n, 1, MPI_INT, first, MPI_COMM_WORLD);
+    std::string what(found);
+    what.resize(std::size_t(n));
+    MPI_Bcast(&what[0], n, MPI_CHAR, first, MPI_COMM_WORLD);
+    throw InputError
+    (
+        what + " at t = " + mesh_.time().timeName() + " s; nothing of this "
+        "step was written, the last good state is time " + lastWritten_
+      + " (startFrom latestTime restarts from it)"
+    );
+}
+
+
+template<class Type>
+void DemCoupling::checkField
+(
+    const Foam::GeometricField<Type, Foam::fvPatchField, Foam::volMesh>& field
+) const
+{
+    std::string found;
+    const Foam::Field<Type>& values = field.primitiveField();
+    forAll(values, celli)
+    {
+        if (finite(values[celli])) continue;
+        const Foam::vector& c = mesh_.C()[celli];
+        found = "non-finite " + field.name() + " in cell "
+              + std::to_string(celli) + " " + format(Vec3{c.x(), c.y(), c.z()});
+        if (Foam::Pstream::parRun())
+        {
+            found += " of processor " + std::to_string(Foam::Pstream::myProcNo());
+        }
+        break;
+    }
+    stopIfAnyRank(found);
+}
+
+
+void DemCoupling::checkParticles
+(
+    const std::string& what, const std::vector<Vec3>& values
+) const
+{
+    std::string found;
+    for (std::size_t i = 0; i < values.size(); ++i)
+    {
+        if (finite(values[i])) continue;
+        found = "non-finite " + what + " on particle "
+              + std::to_string(particles_[i].id) + " " + format(particles_[i].x);
+        break;
+    }
+    stopIfAnyRank(found);
+}
+
+
+void DemCoupling::checkParticles
+(
+    const std::string& what, const std::vector<double>& values
+) const
+{
+    std::string found;
+    for (std::size_t i = 0; i < values.size(); ++i)
+    {
+        if (finite(values[i])) continue;
+        found = "non-finite " + what + " on particle "
+              + std::to_string(particles_[i].id) + " " + format(particles_[i].x);
+        break;
+    }
+    stopIfAnyRank(found);
+}
+
+
+void DemCoupling::checkGas() const
+{
+    checkField(U_);
+    checkField(p_);
 }
 
 
@@ -517,6 +647,7 @@ void DemCoupling::write()
     const Foam::Time& runTime = mesh_.time();
     if (!runTime.writeTime()) return;
 
+    lastWritten_ = runTime.timeName();
     writeParticles();
     const Foam::fileName restart =
         runTime.globalPath()/"DEM"/("restart_" + runTime.timeName() + ".liggghts");

@@ -26,6 +26,9 @@ Description
 
 #include <mpi.h>
 
+#include <cfenv>
+#include <cstdlib>
+
 int main(int argc, char *argv[])
 {
     argList::addNote
@@ -39,6 +42,16 @@ int main(int argc, char *argv[])
     #include "setRootCaseLists.H"
     #include "createTime.H"
     #include "createMesh.H"
+
+    // OpenFOAM's trapFpe turns the first overflow or invalid operation into
+    // a SIGFPE and a stack trace.  spoutFoam lets the NaN or Inf through to
+    // its guards instead, which stop the step with one line naming the
+    // field, the cell (or particle) and the time.  FOAM_SIGFPE set in the
+    // environment keeps OpenFOAM's choice, e.g. to find the operation.
+    if (!std::getenv("FOAM_SIGFPE"))
+    {
+        fedisableexcept(FE_DIVBYZERO | FE_INVALID | FE_OVERFLOW);
+    }
 
     // LIGGGHTS needs MPI even when the case runs serial (OpenFOAM only
     // starts MPI with -parallel).
@@ -66,9 +79,11 @@ int main(int argc, char *argv[])
 
             // PISO: one momentum predictor, then the pressure correctors
             #include "UEqn.H"
+            coupling.checkGas();   // before a NaN reaches the pressure solver
             while (piso.correct())
             {
                 #include "pEqn.H"
+                coupling.checkGas();
             }
 
             // gas energy (eq 4) and the particles' heat, if the case has them
