@@ -580,26 +580,10 @@ void DemCoupling::checkField
 }
 
 
+template<class Value>
 void DemCoupling::checkParticles
 (
-    const std::string& what, const std::vector<Vec3>& values
-) const
-{
-    std::string found;
-    for (std::size_t i = 0; i < values.size(); ++i)
-    {
-        if (finite(values[i])) continue;
-        found = "non-finite " + what + " on particle "
-              + std::to_string(particles_[i].id) + " " + format(particles_[i].x);
-        break;
-    }
-    stopIfAnyRank(found);
-}
-
-
-void DemCoupling::checkParticles
-(
-    const std::string& what, const std::vector<double>& values
+    const std::string& what, const std::vector<Value>& values
 ) const
 {
     std::string found;
