@@ -105,6 +105,22 @@ def height_profiles(g, centres, names, case='.'):
             for z, a in sorted(sums.items())]
 
 
+def downcomer_columns(g, profile):
+    """h across the downcomer: the spread (max - min)/mean of the columns
+    inside it, and the mean of the columns beside the plates and by the
+    walls (on each side the innermost and the outermost column)."""
+    nan = float('nan')
+    z = 0.5 * sum(BAND) * g.Wd / 2
+    sides = [sorted((abs(x), h) for x, h, _, _ in profile
+                    if side * x > 0 and not g.in_spout(x * g.Wd / 2, z)) for side in (-1, 1)]
+    if not all(len(cols) > 2 for cols in sides):
+        return {'h_downcomer_spread': nan, 'h_by_plates': nan, 'h_by_walls': nan}
+    inside = [h for cols in sides for _, h in cols[1:-1]]
+    return {'h_downcomer_spread': (max(inside) - min(inside)) / (sum(inside) / len(inside)),
+            'h_by_plates': sum(cols[0][1] for cols in sides) / 2,
+            'h_by_walls': sum(cols[-1][1] for cols in sides) / 2}
+
+
 def slope(rows, column, lo, hi):
     """Least-squares d h/d(z/R_d) of one column over lo <= z/R_d <= hi."""
     pts = [(r[0], r[column]) for r in rows if lo <= r[0] <= hi and r[column] == r[column]]
@@ -199,15 +215,14 @@ def summarize(g, window, lines, case='.', pictures=True):
         f.write('z/R_d,h spout [W/m2/K],h downcomer [W/m2/K]\n')
         for r in heights:
             f.write('%.3f,%.6g,%.6g\n' % r)
-    down = [r[2] for r in profile if not g.in_spout(r[0] * g.Wd / 2, 0.5 * sum(BAND) * g.Wd / 2)]
+    down = downcomer_columns(g, profile)
     out = {'Tp_spout': history[-1][1], 'Tp_downcomer': history[-1][2],
            'T_outlet': last['gas outlet temperature [K]'],
            'h_spout': means['spout'][0], 'Re_spout': means['spout'][1],
            'h_downcomer': means['downcomer'][0], 'Re_downcomer': means['downcomer'][1],
            'balance': balance, 'pairwise': pairwise, 'samples': len(averaged),
            'dh_dz_spout': slope(heights, 1, *BAND), 'dh_dz_downcomer': slope(heights, 2, *BAND),
-           'h_downcomer_spread': (max(down) - min(down)) / (sum(down) / len(down))
-           if down else float('nan')}
+           **down}
     lines.append('heat transfer: inlet %.1f K, start %.1f K; at t = %g s the particles '
                  'average %.2f K in the spout, %.2f K in the downcomer; gas leaves at %.2f K'
                  % (g.Tin, g.T0, last['time [s]'], out['Tp_spout'], out['Tp_downcomer'],
@@ -218,9 +233,10 @@ def summarize(g, window, lines, case='.', pictures=True):
                                                       out['Re_downcomer'], out['h_spout'],
                                                       out['h_downcomer'])))
         lines.append('  h along the band: %+.2f (spout) and %+.2f (downcomer) W/m2/K per R_d '
-                     'of height; across the downcomer h spans %.0f %% of its mean'
+                     'of height; across the downcomer h spans %.0f %% of its mean inside, '
+                     '%.1f W/m2/K beside the plates, %.1f by the walls'
                      % (out['dh_dz_spout'], out['dh_dz_downcomer'],
-                        100 * out['h_downcomer_spread']))
+                        100 * out['h_downcomer_spread'], out['h_by_plates'], out['h_by_walls']))
     else:
         lines.append('  z/R_d %g-%g: no particles there at the %d write times of the window '
                      '(bed below it, or the window too short): no h and Re profiles'
