@@ -284,6 +284,9 @@ void DemCoupling::startHeat
         );
     }
     heat_.reset(new HeatCoupling(mesh_, dict_, model, voidfraction_, phi, rho, mu));
+    // the particles' m c_p/A do not change during a run (deleting particles
+    // can only raise the smallest), so it is taken once
+    minHeatCapacityPerArea_ = dem_->minHeatCapacityPerArea();
     Foam::Info<< "Heat transfer: " << model.c_str() << ", gas c_p "
         << heat_->gas().cp << " J/kg/K, k_c " << heat_->gas().kappa
         << " W/m/K" << Foam::endl;
@@ -429,7 +432,7 @@ void DemCoupling::exchange(const VoidFractionResult& vf)
     if (heat_)
     {
         heat_->updateCoefficients(locator_, particles_, vf.map, ex);
-        heat_->checkTimeStep(dem_->minHeatCapacityPerArea());
+        heat_->checkTimeStep(minHeatCapacityPerArea_);
     }
     logStep(vf, ex);
 }
@@ -470,8 +473,9 @@ void DemCoupling::logHeat()
     for (double q : heatFlux_) toParticles += q;
     sumOverRanks(&toParticles, 1);
     const GasHeatBalance b = heat_->balance();
-    const double Ep = dem_->thermalEnergy();
-    const double meanTp = Ep/std::max(dem_->totalHeatCapacity(), 1e-300);
+    const LiggghtsDem::HeatContent particles = dem_->heatContent();
+    const double Ep = particles.energy;
+    const double meanTp = Ep/std::max(particles.capacity, 1e-300);
 
     std::ostringstream row;
     // energies of order 1e6 J change by a few J per step: 15 digits keep

@@ -374,30 +374,19 @@ void LiggghtsDem::setHeatFluxes(const std::vector<double>& q)
 }
 
 
-double LiggghtsDem::thermalEnergy() const
+LiggghtsDem::HeatContent LiggghtsDem::heatContent() const
 {
     const auto* atom = lmp_->atom;
     const double* T = temperature_->vector_atom;
-    double E = 0;
+    double sums[2] = {0, 0};   // m c_p T, m c_p
     for (int i = 0; i < atom->nlocal; ++i)
     {
-        E += atom->rmass[i]*heatCapacity_[atom->type[i] - 1]*T[i];
+        const double C = atom->rmass[i]*heatCapacity_[atom->type[i] - 1];
+        sums[0] += C*T[i];
+        sums[1] += C;
     }
-    MPI_Allreduce(MPI_IN_PLACE, &E, 1, MPI_DOUBLE, MPI_SUM, comm_);
-    return E;
-}
-
-
-double LiggghtsDem::totalHeatCapacity() const
-{
-    const auto* atom = lmp_->atom;
-    double C = 0;
-    for (int i = 0; i < atom->nlocal; ++i)
-    {
-        C += atom->rmass[i]*heatCapacity_[atom->type[i] - 1];
-    }
-    MPI_Allreduce(MPI_IN_PLACE, &C, 1, MPI_DOUBLE, MPI_SUM, comm_);
-    return C;
+    MPI_Allreduce(MPI_IN_PLACE, sums, 2, MPI_DOUBLE, MPI_SUM, comm_);
+    return HeatContent{sums[0], sums[1]};
 }
 
 
