@@ -58,16 +58,20 @@ def particle_history(g, case='.'):
     return rows
 
 
-def band_profiles(g, centres, names, case='.'):
+def read_samples(names, case='.'):
+    """(hp, Rep) cell fields of the write times `names`, each read once."""
+    return [(sc.read_field(os.path.join(case, n, 'hp')), sc.read_field(os.path.join(case, n, 'Rep')))
+            for n in names]
+
+
+def band_profiles(g, centres, samples):
     """h and Re of the cells holding particles in the band of Fig 12, per
-    column (x) and per region, averaged over the write times `names`."""
+    column (x) and per region, averaged over the samples (read_samples)."""
     Rd = g.Wd / 2
     cells = [i for i, (x, y, z) in enumerate(centres)
              if BAND[0] <= 1000 * z / Rd <= BAND[1]]
     columns, regions = {}, {'spout': [0.0, 0.0, 0], 'downcomer': [0.0, 0.0, 0]}
-    for name in names:
-        h = sc.read_field(os.path.join(case, name, 'hp'))
-        re = sc.read_field(os.path.join(case, name, 'Rep'))
+    for h, re in samples:
         for i in cells:
             if re[i] <= 0:
                 continue          # no particles in the cell at this time
@@ -84,15 +88,13 @@ def band_profiles(g, centres, names, case='.'):
     return profile, means
 
 
-def height_profiles(g, centres, names, case='.'):
+def height_profiles(g, centres, samples):
     """Mean h per cell row (z/R_d) in the spout between the plates and in the
-    downcomer, over the cells holding particles and the write times `names`:
-    rows (z/R_d, h spout, h downcomer)."""
+    downcomer, over the cells holding particles and the samples: rows
+    (z/R_d, h spout, h downcomer)."""
     Rd = g.Wd / 2
     sums = {}
-    for name in names:
-        h = sc.read_field(os.path.join(case, name, 'hp'))
-        re = sc.read_field(os.path.join(case, name, 'Rep'))
+    for h, re in samples:
         for i, (x, y, z) in enumerate(centres):
             if re[i] <= 0 or 1000 * z >= g.Hd:
                 continue
@@ -207,10 +209,11 @@ def summarize(g, window, lines, case='.', pictures=True):
     end = times[-1][0]
     averaged = [n for t, n in times if t >= end - window - 1e-9 and t > 0]
     centres = sc.read_field(os.path.join(case, '0', 'C'))
-    profile, means = band_profiles(g, centres, averaged, case)
+    samples = read_samples(averaged, case)
+    profile, means = band_profiles(g, centres, samples)
     if plot_profiles(profile, 'heatTransfer.png'):
         plots.append('heatTransfer.png')
-    heights = height_profiles(g, centres, averaged, case)
+    heights = height_profiles(g, centres, samples)
     with open('heatHeight.csv', 'w') as f:
         f.write('z/R_d,h spout [W/m2/K],h downcomer [W/m2/K]\n')
         for r in heights:
