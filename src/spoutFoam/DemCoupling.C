@@ -10,6 +10,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <iomanip>
 #include <sstream>
 
@@ -175,8 +177,14 @@ DemCoupling::DemCoupling
     {
         const Foam::fileName dir = mesh.time().globalPath()/"postProcessing";
         Foam::mkDir(dir);
-        const bool fresh = mesh.time().timeIndex() == 0
-                        && mesh.time().value() == mesh.time().startTime().value();
+        const bool fresh = mesh.time().value() == 0;
+        // a restart continues the log of the run it resumes: rows a killed
+        // run wrote after its last write time go, and so does the row of the
+        // restart time itself unless the step state keeps it exact
+        if (!fresh)
+        {
+            trimLog(dir/"coupling.csv", resumed_ ? 0.5 : -0.5);
+        }
         log_.reset
         (
             new std::ofstream
@@ -209,12 +217,39 @@ DemCoupling::DemCoupling
     }
 
     // particles at the start time: map them so the first gas step already
-    // sees the bed, and so the fluid forces exist before the first DEM step
+    // sees the bed.  A fresh run computes the fluid forces (and heat fluxes)
+    // for the first DEM steps here; a restart has them from its step state
+    // (the uninterrupted run computed them before that step's gas solve,
+    // from gas fields the time directory no longer holds).
     vf_ = mapParticles();
-    exchange(vf_);
-    transferHeat();
     voidfraction_.oldTime() = voidfraction_;
-    writeParticles();
+    if (!resumed_)
+    {
+        exchange(vf_);
+        transferHeat();
+        writeParticles();
+    }
+}
+
+
+void DemCoupling::trimLog(const std::string& file, double stepsPast) const
+{
+    std::ifstream in(file);
+    if (!in) return;
+    const double tMax =
+        mesh_.time().value() + stepsPast*mesh_.time().deltaTValue();
+    std::string kept, line;
+    while (std::getline(in, line))
+    {
+        // the header and every row up to the restart time
+        char* end = nullptr;
+        const double t = std::strtod(line.c_str(), &end);
+        if (end == line.c_str() || t <= tMax) kept += line + '\n';
+    }
+    in.close();
+    const std::string tmp = file + ".tmp";
+    std::ofstream(tmp, std::ios::trunc) << kept;
+    std::rename(tmp.c_str(), file.c_str());
 }
 
 
@@ -258,6 +293,23 @@ void DemCoupling::startDem()
     (
         new LiggghtsDem(input, vars, caseDir/"log.liggghts", MPI_COMM_WORLD)
     );
+    if (runTime.value() > 0)
+    {
+        const Foam::fileName state =
+            demDir/("restart_" + runTime.timeName() + ".state");
+        if (Foam::isFile(state))
+        {
+            dem_->readStepState(state);
+            resumed_ = true;
+        }
+        else
+        {
+            Foam::Info<< "spoutFoam: no DEM step state " << state << "; the "
+                "fluid forces of the first steps are recomputed from the gas "
+                "fields, so this restart is close to, not equal to, the "
+                "uninterrupted run" << Foam::endl;
+        }
+    }
     Foam::Info<< "LIGGGHTS: " << dem_->nParticles() << " particles from "
         << input << ", DEM time step " << dem_->timeStep() << " s" << Foam::endl;
 }
@@ -637,9 +689,9 @@ void DemCoupling::write()
 
     lastWritten_ = runTime.timeName();
     writeParticles();
-    const Foam::fileName restart =
-        runTime.globalPath()/"DEM"/("restart_" + runTime.timeName() + ".liggghts");
-    dem_->command("write_restart " + restart);
+    const Foam::fileName stem =
+        runTime.globalPath()/"DEM"/("restart_" + runTime.timeName());
+    dem_->writeRestart(stem + ".liggghts", stem + ".state");
 }
 
 

@@ -15,6 +15,7 @@
 #include "update.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -476,6 +477,169 @@ double LiggghtsDem::maxNormalStiffness() const
 void LiggghtsDem::command(const std::string& cmd)
 {
     lmp_->input->one(cmd.c_str());
+}
+
+
+// --- restarts ------------------------------------------------------------------
+// The step state is a binary file: the tag line, the number of rows and their
+// width, then one row of doubles per atom: id, force (3), torque (3), fluid
+// force (3) and, with heat transfer, the convective heat flux.
+
+namespace
+{
+
+const std::string stepStateTag = "SpoutLab DEM step state 1\n";
+
+} // namespace
+
+
+int LiggghtsDem::stepStateWidth() const
+{
+    return hasHeat() ? 11 : 10;
+}
+
+
+std::vector<double> LiggghtsDem::packStepState() const
+{
+    const auto* atom = lmp_->atom;
+    const int width = stepStateWidth();
+    std::vector<double> rows(std::size_t(atom->nlocal)*width);
+    for (int i = 0; i < atom->nlocal; ++i)
+    {
+        double* row = &rows[std::size_t(i)*width];
+        row[0] = atom->tag[i];
+        for (int d = 0; d < 3; ++d)
+        {
+            row[1 + d] = atom->f[i][d];
+            row[4 + d] = atom->torque[i][d];
+            row[7 + d] = dragForce_->array_atom[i][d];
+        }
+        if (hasHeat()) row[10] = convectiveHeatFlux_->vector_atom[i];
+    }
+    return rows;
+}
+
+
+long LiggghtsDem::unpackStepState(const std::vector<double>& rows)
+{
+    auto* atom = lmp_->atom;
+    const int width = stepStateWidth();
+    long found = 0;
+    for (std::size_t k = 0; k < rows.size()/width; ++k)
+    {
+        const double* row = &rows[k*width];
+        const int i = atom->map(int(row[0]));
+        if (i < 0 || i >= atom->nlocal) continue;
+        ++found;
+        for (int d = 0; d < 3; ++d)
+        {
+            atom->f[i][d] = row[1 + d];
+            atom->torque[i][d] = row[4 + d];
+            dragForce_->array_atom[i][d] = row[7 + d];
+        }
+        if (hasHeat()) convectiveHeatFlux_->vector_atom[i] = row[10];
+    }
+    return atom->nlocal - found;
+}
+
+
+void LiggghtsDem::writeRestart(const std::string& restartFile, const std::string& stateFile)
+{
+    Activity doing("writing the restart '" + restartFile + "'");
+    command("write_restart " + restartFile);
+    const std::vector<double> local = packStepState();
+    writeStepState(stateFile, local);
+    // The set-up of a restarted run builds new neighbour lists, and LIGGGHTS'
+    // contact forces after a rebuild at another step are not quite those of
+    // the old lists (measured: the first step after a restart changed the
+    // force on 24 of 1500 particles, by up to 4e-4 of it).  Passing through
+    // the same set-up here, and restoring the same state, keeps the
+    // continuing run on the path a restart from these files takes.
+    setup();
+    unpackStepState(local);
+}
+
+
+void LiggghtsDem::writeStepState
+(
+    const std::string& file, const std::vector<double>& local
+) const
+{
+    int rank = 0, nProcs = 1;
+    MPI_Comm_rank(comm_, &rank);
+    MPI_Comm_size(comm_, &nProcs);
+    std::vector<int> counts(nProcs), offsets(nProcs, 0);
+    int myCount = int(local.size());
+    MPI_Gather(&myCount, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm_);
+    for (int p = 1; p < nProcs; ++p) offsets[p] = offsets[p-1] + counts[p-1];
+    std::vector<double> all(rank == 0 ? std::size_t(offsets.back() + counts.back()) : 0);
+    MPI_Gatherv
+    (
+        local.data(), myCount, MPI_DOUBLE,
+        all.data(), counts.data(), offsets.data(), MPI_DOUBLE, 0, comm_
+    );
+    if (rank != 0) return;
+
+    // a killed run never leaves a truncated state beside a complete restart
+    const std::string tmp = file + ".tmp";
+    {
+        std::ofstream os(tmp, std::ios::binary | std::ios::trunc);
+        const std::int64_t rows = std::int64_t(all.size()/stepStateWidth());
+        const std::int32_t width = stepStateWidth();
+        os.write(stepStateTag.data(), std::streamsize(stepStateTag.size()));
+        os.write(reinterpret_cast<const char*>(&rows), sizeof rows);
+        os.write(reinterpret_cast<const char*>(&width), sizeof width);
+        os.write
+        (
+            reinterpret_cast<const char*>(all.data()),
+            std::streamsize(all.size()*sizeof(double))
+        );
+        if (!os)
+        {
+            throw InputError("cannot write the DEM step state '" + tmp + "'");
+        }
+    }
+    std::rename(tmp.c_str(), file.c_str());
+}
+
+
+void LiggghtsDem::readStepState(const std::string& file)
+{
+    std::ifstream is(file, std::ios::binary);
+    std::string tag(stepStateTag.size(), '\0');
+    std::int64_t rows = -1;
+    std::int32_t width = -1;
+    is.read(&tag[0], std::streamsize(tag.size()));
+    is.read(reinterpret_cast<char*>(&rows), sizeof rows);
+    is.read(reinterpret_cast<char*>(&width), sizeof width);
+    if (!is || tag != stepStateTag || width != stepStateWidth() || rows < 0)
+    {
+        throw InputError
+        (
+            "DEM step state '" + file + "': expected a '"
+          + stepStateTag.substr(0, stepStateTag.size() - 1) + "' file with rows of "
+          + std::to_string(stepStateWidth()) + " values (this case's LIGGGHTS input)"
+        );
+    }
+    std::vector<double> all(std::size_t(rows)*width);
+    is.read
+    (
+        reinterpret_cast<char*>(all.data()), std::streamsize(all.size()*sizeof(double))
+    );
+    if (!is)
+    {
+        throw InputError("DEM step state '" + file + "': truncated file");
+    }
+    long missing = unpackStepState(all);
+    MPI_Allreduce(MPI_IN_PLACE, &missing, 1, MPI_LONG, MPI_SUM, comm_);
+    if (missing != 0)
+    {
+        throw InputError
+        (
+            "DEM step state '" + file + "': no row for " + std::to_string(missing)
+          + " particle(s) of the LIGGGHTS restart beside it"
+        );
+    }
 }
 
 } // namespace spoutlab
