@@ -70,7 +70,13 @@ TEST(SlenderPlume, EulerianAndGaussianAgreeWithTheExactSolution)
     h.cls = 4;
     h.mixingHeight = H;
 
-    double worstG = 0, worstE = 0;
+    // Largest deviations measured: Gaussian 0.83 %, the slender-plume error
+    // ~ K_H/(u x) of dropping the along-wind diffusion (<= 0.8 % at 610 m
+    // for K_H = 10, u = 2); Eulerian 2.03 %, the 2nd-order discretisation on
+    // 20 x 20 x 10 m cells.  The bounds sit just above them, so a change in
+    // either model that costs a few tenths of a per cent is caught.
+    const double tolGaussian = 0.0085, tolEulerian = 0.021;
+    double worstG = 0, worstE = 0, worstEG = 0;
     for (double x : {610.0, 1010.0, 1510.0})
         for (double y : {0.0, 60.0})
             for (double z : {5.0, 55.0})
@@ -84,14 +90,15 @@ TEST(SlenderPlume, EulerianAndGaussianAgreeWithTheExactSolution)
                 const double gau = gm.concentration(h, r);
                 worstG = std::max(worstG, std::abs(gau / exact - 1));
                 worstE = std::max(worstE, std::abs(eul / exact - 1));
-                // slender-plume error of the Gaussian ~ K_H/(u x) <= 2.5 %
-                // here; the Eulerian error is the 2nd-order discretisation
-                EXPECT_NEAR(gau, exact, 0.04 * exact) << "Gaussian x=" << x << " y=" << y << " z=" << z;
-                EXPECT_NEAR(eul, exact, 0.04 * exact) << "Eulerian x=" << x << " y=" << y << " z=" << z;
-                EXPECT_NEAR(eul, gau, 0.05 * gau) << "x=" << x << " y=" << y << " z=" << z;
+                worstEG = std::max(worstEG, std::abs(eul / gau - 1));
+                EXPECT_NEAR(gau, exact, tolGaussian * exact) << "Gaussian x=" << x << " y=" << y << " z=" << z;
+                EXPECT_NEAR(eul, exact, tolEulerian * exact) << "Eulerian x=" << x << " y=" << y << " z=" << z;
+                // the two errors may add, never more
+                EXPECT_NEAR(eul, gau, (tolGaussian + tolEulerian) * gau) << "x=" << x << " y=" << y << " z=" << z;
             }
-    std::printf("largest deviation from the exact solution: Gaussian %.2f %%, Eulerian %.2f %%\n",
-                100 * worstG, 100 * worstE);
+    std::printf("largest deviation from the exact solution: Gaussian %.2f %%, Eulerian %.2f %%; "
+                "Eulerian from Gaussian %.2f %%\n",
+                100 * worstG, 100 * worstE, 100 * worstEG);
 }
 
 namespace
@@ -155,6 +162,9 @@ TEST(SlenderPlume, PointSource3DConvergesUnderRefinement)
     const double e1 = error3D(1), e2 = error3D(2);
     const double p = std::log2(e1 / e2);
     std::printf("3D box source, QUICK: relative L2 errors %.3e (40 m), %.3e (20 m); observed order %.2f\n", e1, e2, p);
-    EXPECT_NEAR(p, 2.0, 0.4);   // two coarse grids: pre-asymptotic, hence the wider band
-    EXPECT_LT(e2, 0.02);
+    // measured: 6.52e-2, 1.47e-2, order 2.15 (README); two coarse grids are
+    // pre-asymptotic, so the order is held to 2 +- 0.25 and the fine error
+    // to what it reaches
+    EXPECT_NEAR(p, 2.0, 0.25);
+    EXPECT_LT(e2, 0.016);
 }
