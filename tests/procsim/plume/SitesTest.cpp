@@ -1,6 +1,7 @@
 // Terrain grids and the placement of sources on the Eulerian grid.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -38,36 +39,103 @@ TEST(EsriGrid, NodataIsAnError)
     std::remove(path.c_str());
 }
 
-TEST(Sources, AreaAndVolumeEmissionsAreConservedAndReduced)
+namespace
 {
-    TerrainGrid g(20, 16, 8, 0.0, 0.0, 50.0, 50.0, 600.0, 2.0,
-                  [](double x, double y) { return 100 + 0.1 * x - 0.05 * y; });
+
+// 20 x 16 columns of 50 m on a tilted plane, 8 stretched levels up to 600 m
+TerrainGrid tiltedGrid()
+{
+    return TerrainGrid(20, 16, 8, 0.0, 0.0, 50.0, 50.0, 600.0, 2.0,
+                       [](double x, double y) { return 100 + 0.1 * x - 0.05 * y; });
+}
+
+Source areaSource()
+{
     Source a;
     a.name = "A";
     a.type = Source::Type::Area;
-    a.x = 333;
+    a.x = 333;   // x 248..418, y 356..446 m
     a.y = 401;
     a.lx = 170;
     a.ly = 90;
-    a.height = 3;
+    a.height = 3;   // below the lowest cell centre (~10 m) everywhere
     a.rate = 0.01;
-    Source v = a;
+    return a;
+}
+
+Source volumeSource()
+{
+    Source v = areaSource();
     v.name = "V";
     v.type = Source::Type::Volume;
     v.bottom = 0;
     v.top = 40;
+    v.height = 20;
     v.rate = 0.004;
     v.controlled = false;   // not subject to the cut
-    const auto q = distributeSources(g, {a, v}, 0.8);
-    double total = 0;
-    for (double x : q) total += x;
-    EXPECT_NEAR(total, 0.01 * 0.2 + 0.004, 1e-15);
-    // the area source sits in the lowest layer only
+    return v;
+}
+
+double sum(const std::vector<double>& q)
+{
+    double s = 0;
+    for (double x : q) s += x;
+    return s;
+}
+
+} // namespace
+
+// Each source separately, so that neither can meet the other's check: the
+// area source puts all of its (reduced) emission into the lowest layer, each
+// column its share of the footprint (column (6, 7): x 300..350 m inside,
+// y 350..400 m of which 356..400 inside, so 50 x 44 m of 170 x 90 m);
+// the volume source shares each column's part among the layers by the
+// overlap of [bottom, top] with the layer's height range.
+TEST(Sources, AreaSourceFillsTheGroundLayerByFootprint)
+{
+    const TerrainGrid g = tiltedGrid();
+    const auto q = distributeSources(g, {areaSource()}, 0.8);
+    const double emitted = 0.01 * 0.2;
+    EXPECT_NEAR(sum(q), emitted, 1e-15);
     double ground = 0;
     for (int j = 0; j < g.ny; ++j)
         for (int i = 0; i < g.nx; ++i) ground += q[g.idx(i, j, 0)];
-    EXPECT_GT(ground, 0.002 - 1e-15);
-    Source out = a;
+    EXPECT_NEAR(ground, emitted, 1e-15);   // nothing above the lowest layer
+    EXPECT_NEAR(q[g.idx(6, 7, 0)], emitted * 50 * 44 / (170 * 90), 1e-15);
+    // column (4, 7) spans x 200..250 and holds the strip 248..250
+    EXPECT_NEAR(q[g.idx(4, 7, 0)], emitted * 2 * 44 / (170 * 90), 1e-15);
+    EXPECT_EQ(q[g.idx(3, 7, 0)], 0.0);
+}
+
+TEST(Sources, VolumeSourceSharedByHeightOverlap)
+{
+    const TerrainGrid g = tiltedGrid();
+    const auto q = distributeSources(g, {volumeSource()}, 0.8);
+    EXPECT_NEAR(sum(q), 0.004, 1e-15);   // uncontrolled: no cut
+    const double column = 0.004 * 50 * 44 / (170 * 90);
+    const double d = g.depth(6, 7);
+    double inColumn = 0;
+    for (int k = 0; k < g.nz; ++k)
+    {
+        const double lo = d * g.fFace[k], hi = d * g.fFace[k + 1];
+        const double overlap = std::max(0.0, std::min(hi, 40.0) - std::max(lo, 0.0));
+        EXPECT_NEAR(q[g.idx(6, 7, k)], column * overlap / 40, 1e-15) << "layer " << k;
+        inColumn += q[g.idx(6, 7, k)];
+    }
+    EXPECT_NEAR(inColumn, column, 1e-15);
+    ASSERT_GT(d * g.fFace[1], 0.0);
+    ASSERT_LT(d * g.fFace[1], 40.0);   // the source reaches above the lowest layer
+    EXPECT_GT(q[g.idx(6, 7, 1)], 0.0);
+}
+
+TEST(Sources, SourcesAddAndOneOutsideIsAnError)
+{
+    const TerrainGrid g = tiltedGrid();
+    const auto a = distributeSources(g, {areaSource()}, 0.8);
+    const auto v = distributeSources(g, {volumeSource()}, 0.8);
+    const auto both = distributeSources(g, {areaSource(), volumeSource()}, 0.8);
+    for (std::size_t n = 0; n < both.size(); ++n) ASSERT_NEAR(both[n], a[n] + v[n], 1e-18);
+    Source out = areaSource();
     out.x = 990;   // extends past x = 1000
     EXPECT_THROW(distributeSources(g, {out}, 0.0), procsim::InputError);
 }
