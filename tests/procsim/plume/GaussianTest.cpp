@@ -66,6 +66,18 @@ TEST(GaussianHandComputed, EachStabilityClass)
     }
 }
 
+// The vertical term without a lid is the source and its image below the
+// ground: V = exp(-(z-h)^2/2sz^2) + exp(-(z+h)^2/2sz^2).  h = 20 m, sz = 10 m:
+//   z = 0:  2 exp(-2)                    = 0.2706705664732254 (the ground doubles it)
+//   z = 5:  exp(-1.125) + exp(-3.125)    = 0.3685894009817572
+//   z = 20: 1 + exp(-8)                  = 1.0003354626279024
+TEST(GaussianHandComputed, GroundReflection)
+{
+    EXPECT_NEAR(verticalTerm(0, 20, 10, 0), 0.2706705664732254, 1e-14);
+    EXPECT_NEAR(verticalTerm(5, 20, 10, 0), 0.3685894009817572, 1e-14);
+    EXPECT_NEAR(verticalTerm(20, 20, 10, 0), 1.0003354626279024, 1e-14);
+}
+
 // Class C at x = 3000 m: sz = 0.08*3000/sqrt(1.6) = 189.737 m; u = 3 * 2^0.10.
 //  zi = 200 m (sz < 1.6 zi): images at 2 i zi +- h, V = 2.43126677 at z = 1.5,
 //    y = 0, so C = Q V / (2 pi u sy sz) = 2.191467e-8 kg/m3;
