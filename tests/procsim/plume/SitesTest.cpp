@@ -139,3 +139,71 @@ TEST(Sources, SourcesAddAndOneOutsideIsAnError)
     out.x = 990;   // extends past x = 1000
     EXPECT_THROW(distributeSources(g, {out}, 0.0), procsim::InputError);
 }
+
+// A point source is spread by trilinear weights: whatever the position, the
+// cells receive exactly its emission, none a negative share, and inside the
+// grid (between the outermost cell centres) their emission-weighted mean
+// position is the source's own -- in x, y and in the height above ground.
+// Positions: on a cell corner (faces in x, y and an s-level), at a cell
+// centre, in general, close to a lateral boundary, below the lowest cell
+// centre (all into the lowest cells) and near the lid.
+TEST(Sources, PointSourceTrilinearConservesEmissionAndPosition)
+{
+    const TerrainGrid g = tiltedGrid();
+    struct Case
+    {
+        double x, y, height;
+        bool interior;   // between the outermost centres in every direction
+    };
+    const double faceHeight = g.depth(6, 7) * g.fFace[3];   // an s-level over column (6, 7)
+    const Case cases[] = {{300, 350, faceHeight, true},   {325, 375, g.depth(6, 7) * g.fCell[2], true},
+                          {433.3, 512.7, 47.1, true},     {10, 790, 30, false},
+                          {612, 244, 2.0, false},         {140, 160, 440, false}};
+    for (const auto& c : cases)
+    {
+        Source p;
+        p.name = "P";
+        p.type = Source::Type::Point;
+        p.x = c.x;
+        p.y = c.y;
+        p.height = c.height;
+        p.rate = 0.003;
+        const auto q = distributeSources(g, {p}, 0.0);
+        double total = 0, mx = 0, my = 0, mz = 0;
+        int cells = 0;
+        for (int k = 0; k < g.nz; ++k)
+            for (int j = 0; j < g.ny; ++j)
+                for (int i = 0; i < g.nx; ++i)
+                {
+                    const double w = q[g.idx(i, j, k)];
+                    ASSERT_GE(w, 0.0);
+                    if (w == 0) continue;
+                    ++cells;
+                    total += w;
+                    mx += w * g.xc(i);
+                    my += w * g.yc(j);
+                    mz += w * g.heightAboveGround(i, j, k);
+                }
+        const std::string at = std::to_string(c.x) + ", " + std::to_string(c.y) + ", " + std::to_string(c.height);
+        EXPECT_NEAR(total, 0.003, 1e-17) << at;
+        EXPECT_LE(cells, 8) << at;
+        if (c.interior)
+        {
+            EXPECT_NEAR(mx / total, c.x, 1e-9) << at;
+            EXPECT_NEAR(my / total, c.y, 1e-9) << at;
+            // the heights are interpolated within each column, so the mean
+            // height above ground is the release height wherever the terrain
+            EXPECT_NEAR(mz / total, c.height, 1e-9) << at;
+        }
+    }
+    // on a corner of cells, all eight cells share it
+    Source corner;
+    corner.type = Source::Type::Point;
+    corner.x = 300;
+    corner.y = 350;
+    corner.height = 47.1;
+    corner.rate = 1;
+    int cells = 0;
+    for (double w : distributeSources(g, {corner}, 0.0)) cells += w > 0;
+    EXPECT_EQ(cells, 8);
+}
