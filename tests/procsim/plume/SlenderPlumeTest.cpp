@@ -137,8 +137,8 @@ std::vector<double> pointSourceRun(const TerrainGrid& g, const std::vector<std::
 // x, y and z (a 5 m ground cell under the 10 m cells) -- on a corner of eight
 // cells.  Placed in the cell that contains it, the source moved by half a
 // cell on grid B (to 220, 10, 60 m), a first-order error: up to 56 % at
-// these receptors, -13 % at the ground 800 m downwind (exp(-(60^2 - 55^2) /
-// (2 sigma_z^2)), sigma_z^2 = 2 K_V x/u).  Spread by trilinear weights it keeps
+// these receptors, about -13 % at the ground 1 km downwind (exp(-(60^2 -
+// 55^2) / (2 sigma_z^2)), sigma_z^2 = 2 K_V x/u).  Spread by trilinear weights it keeps
 // its position, and what is left is second order, the spread itself: on grid
 // B the source is the mean of eight point sources at (210 +- 10, 0 +- 10,
 // 55 +- 5) m.  So
