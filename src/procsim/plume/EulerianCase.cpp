@@ -201,6 +201,53 @@ EulerianCase loadEulerianCase(const std::string& path)
     return c;
 }
 
+namespace
+{
+
+using Weights = std::vector<std::pair<int, double>>;
+
+// Linear weights of a coordinate f (in cell units, cell n centred at n) over
+// the cell centres either side; beyond the outermost centres all of it goes
+// to the edge cell, so the weights always add up to one.
+Weights linearWeights(double f, int n)
+{
+    if (n < 2 || f <= 0) return {{0, 1.0}};
+    if (f >= n - 1) return {{n - 1, 1.0}};
+    const int i = static_cast<int>(f);
+    return {{i, 1 - (f - i)}, {i + 1, f - i}};
+}
+
+// Columns around a point (x, y) with bilinear weights.
+std::vector<std::pair<std::size_t, double>> pointColumns(const TerrainGrid& g, double x, double y)
+{
+    std::vector<std::pair<std::size_t, double>> cols;
+    for (const auto& [i, wx] : linearWeights((x - g.x0) / g.dx - 0.5, g.nx))
+        for (const auto& [j, wy] : linearWeights((y - g.y0) / g.dy - 0.5, g.ny))
+            cols.emplace_back(g.col(i, j), wx * wy);
+    return cols;
+}
+
+// Layers of column (i, j) around a height above ground: linear between the
+// cell centres; below the lowest centre all in the lowest cell (the no-flux
+// ground reflects what would lie below it), likewise at the lid.
+Weights layersAround(const TerrainGrid& g, int i, int j, double height)
+{
+    const double d = g.depth(i, j);
+    if (g.nz < 2 || height <= d * g.fCell[0]) return {{0, 1.0}};
+    int k = 0;
+    while (k + 1 < g.nz && d * g.fCell[k + 1] <= height) ++k;
+    if (k == g.nz - 1) return {{k, 1.0}};
+    const double t = (height - d * g.fCell[k]) / (d * (g.fCell[k + 1] - g.fCell[k]));
+    return {{k, 1 - t}, {k + 1, t}};
+}
+
+} // namespace
+
+// A point source is spread over the (up to) eight cells around it by
+// trilinear weights, and an area source's release height over the two
+// layers around it: placing either in the cell that contains it would move
+// it by up to half a cell wherever a face passes near it.  The weights add up
+// to one, and inside the grid they keep the source's position (first moment).
 std::vector<double> distributeSources(const TerrainGrid& g, const std::vector<Source>& sources,
                                       double reduction)
 {
@@ -223,9 +270,7 @@ std::vector<double> distributeSources(const TerrainGrid& g, const std::vector<So
         std::vector<std::pair<std::size_t, double>> cols;
         if (s.type == Source::Type::Point)
         {
-            const int i = std::min(static_cast<int>((s.x - g.x0) / g.dx), g.nx - 1);
-            const int j = std::min(static_cast<int>((s.y - g.y0) / g.dy), g.ny - 1);
-            cols.emplace_back(g.col(i, j), 1.0);
+            cols = pointColumns(g, s.x, s.y);
         }
         else
         {
@@ -239,6 +284,7 @@ std::vector<double> distributeSources(const TerrainGrid& g, const std::vector<So
         }
         for (const auto& [col, w] : cols)
         {
+            if (w <= 0) continue;
             const int i = static_cast<int>(col % g.nx), j = static_cast<int>(col / g.nx);
             const double d = g.depth(i, j);
             if (s.type == Source::Type::Volume)
@@ -256,9 +302,7 @@ std::vector<double> distributeSources(const TerrainGrid& g, const std::vector<So
             {
                 if (s.height >= d)
                     throw InputError(s.where + ": source '" + s.name + "' is above the model lid");
-                int k = 0;
-                while (k + 1 < g.nz && d * g.fFace[k + 1] <= s.height) ++k;
-                q[g.idx(i, j, k)] += rate * w;
+                for (const auto& [k, wz] : layersAround(g, i, j, s.height)) q[g.idx(i, j, k)] += rate * w * wz;
             }
         }
     }

@@ -2,37 +2,29 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <stdexcept>
+
+#include <boost/math/special_functions/digamma.hpp>
+#include <boost/math/special_functions/erf.hpp>
+#include <boost/math/special_functions/gamma.hpp>
+#include <boost/math/special_functions/trigamma.hpp>
 
 namespace procsim::plume
 {
 
-double digamma(double x)
+namespace
 {
-    double r = 0;
-    while (x < 6)
-    {
-        r -= 1 / x;
-        x += 1;
-    }
-    const double f = 1 / (x * x);
-    return r + std::log(x) - 0.5 / x
-           - f * (1.0 / 12 - f * (1.0 / 120 - f * (1.0 / 252 - f * (1.0 / 240 - f / 132))));
-}
 
-double trigamma(double x)
-{
-    double r = 0;
-    while (x < 6)
-    {
-        r += 1 / (x * x);
-        x += 1;
-    }
-    const double f = 1 / (x * x);
-    return r + 1 / x + f / 2
-           + f / x * (1.0 / 6 - f * (1.0 / 30 - f * (1.0 / 42 - f * (1.0 / 30))));
-}
+// Boost.Math evaluates double arguments in long double by default, whose
+// width differs between platforms (80 bits on x86-64, 64 or 128 elsewhere);
+// held to double, a seed gives the same synthetic years everywhere.
+using DoublePolicy = boost::math::policies::policy<boost::math::policies::promote_double<false>>;
+
+} // namespace
+
+double digamma(double x) { return boost::math::digamma(x, DoublePolicy()); }
+
+double trigamma(double x) { return boost::math::trigamma(x, DoublePolicy()); }
 
 GammaFit fitGamma(const std::vector<double>& x)
 {
@@ -91,77 +83,23 @@ GammaFit fitGamma(const std::vector<double>& x)
 
 double gammaP(double a, double x)
 {
-    if (x <= 0) return 0.0;
-    const double lead = a * std::log(x) - x - std::lgamma(a);
-    if (x < a + 1)
-    {
-        // series: P = e^{-x} x^a / Gamma(a+1) sum x^n / ((a+1)...(a+n))
-        double term = 1 / a, sum = term;
-        for (int n = 1; n < 100000; ++n)
-        {
-            term *= x / (a + n);
-            sum += term;
-            if (term < sum * 1e-16) break;
-        }
-        return std::min(1.0, sum * std::exp(lead));
-    }
-    // continued fraction for Q = 1 - P (modified Lentz)
-    const double tiny = 1e-300;
-    double b = x + 1 - a, c = 1 / tiny, d = 1 / b, h = d;
-    for (int i = 1; i < 100000; ++i)
-    {
-        const double an = -i * (i - a);
-        b += 2;
-        d = an * d + b;
-        if (std::abs(d) < tiny) d = tiny;
-        c = b + an / c;
-        if (std::abs(c) < tiny) c = tiny;
-        d = 1 / d;
-        const double del = d * c;
-        h *= del;
-        if (std::abs(del - 1) < 1e-16) break;
-    }
-    return std::max(0.0, 1.0 - std::exp(lead) * h);
+    return x <= 0 ? 0.0 : boost::math::gamma_p(a, x, DoublePolicy());
 }
 
 double gammaQuantileZ(const GammaFit& g, double z)
 {
-    const double a = g.shape;
+    // |z| <= 7 keeps Phi(z) and 1 - Phi(z) above 1e-12; the upper tail is
+    // inverted through Q = Phi(-z), which keeps its digits where P -> 1
     z = std::clamp(z, -7.0, 7.0);
-    const double p = normalCdf(z);
-    // Wilson-Hilferty start, then safeguarded Newton on P(a, y) = p
-    double y = a * std::pow(1 - 1 / (9 * a) + z / (3 * std::sqrt(a)), 3);
-    if (!(y > 0) || !std::isfinite(y)) y = std::exp((std::log(p) + std::lgamma(a + 1)) / a);
-    if (!(y > 0) || !std::isfinite(y)) y = 1e-300;
-    double lo = 0, hi = std::numeric_limits<double>::infinity();
-    for (int it = 0; it < 100; ++it)
-    {
-        const double f = gammaP(a, y) - p;
-        if (f < 0) lo = y;
-        else hi = y;
-        const double dens = std::exp((a - 1) * std::log(y) - y - std::lgamma(a));
-        double next = dens > 0 ? y - f / dens : y;
-        if (!(next > lo && next < hi)) next = std::isfinite(hi) ? 0.5 * (lo + hi) : 2 * y + 1e-8;
-        if (std::abs(next - y) <= 1e-12 * y)
-        {
-            y = next;
-            break;
-        }
-        y = next;
-    }
+    const double y = z <= 0 ? boost::math::gamma_p_inv(g.shape, normalCdf(z), DoublePolicy())
+                            : boost::math::gamma_q_inv(g.shape, normalCdf(-z), DoublePolicy());
     return y * g.scale;
 }
 
 double inverseNormal(double p)
 {
     p = std::clamp(p, 1e-15, 1 - 1e-15);
-    double lo = -9, hi = 9;
-    for (int i = 0; i < 80; ++i)
-    {
-        const double m = 0.5 * (lo + hi);
-        (normalCdf(m) < p ? lo : hi) = m;
-    }
-    return 0.5 * (lo + hi);
+    return -std::sqrt(2.0) * boost::math::erfc_inv(2 * p, DoublePolicy());
 }
 
 double gammaQuantile(const GammaFit& g, double p) { return gammaQuantileZ(g, inverseNormal(p)); }

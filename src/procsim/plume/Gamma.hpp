@@ -1,5 +1,6 @@
 #pragma once
 // Gamma distribution: fitting, quantiles and a portable random stream.
+// The special functions are Boost.Math's, evaluated in double.
 #include <cstdint>
 #include <random>
 #include <vector>

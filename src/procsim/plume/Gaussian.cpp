@@ -39,26 +39,6 @@ int stabilityClass(double u, double cloud, double sun)
 
 char className(int cls) { return static_cast<char>('A' + cls - 1); }
 
-double briggsSigmaY(int cls, double x)
-{
-    static const double a[6] = {0.22, 0.16, 0.11, 0.08, 0.06, 0.04};
-    return a[cls - 1] * x / std::sqrt(1 + 1e-4 * x);
-}
-
-double briggsSigmaZ(int cls, double x)
-{
-    switch (cls)
-    {
-    case 1: return 0.20 * x;
-    case 2: return 0.12 * x;
-    case 3: return 0.08 * x / std::sqrt(1 + 2e-4 * x);
-    case 4: return 0.06 * x / std::sqrt(1 + 1.5e-3 * x);
-    case 5: return 0.03 * x / (1 + 3e-4 * x);
-    case 6: return 0.016 * x / (1 + 3e-4 * x);
-    }
-    throw std::invalid_argument("stability class must be 1..6");
-}
-
 double ruralWindExponent(int cls)
 {
     static const double p[6] = {0.07, 0.07, 0.10, 0.15, 0.35, 0.55};
@@ -89,7 +69,7 @@ struct GaussianModel::Element
 {
     double x, y, q, h;
     double sy0 = 0, sz0 = 0;
-    std::array<double, 7> xy{}, xz{};   // Briggs virtual distances per class
+    std::array<double, 7> xy{}, xz{};   // virtual distances per class
     int group = 0;                      // depletion table group (source index)
 };
 
@@ -137,8 +117,10 @@ double virtualDistance(F sigma, double s0)
 } // namespace
 
 GaussianModel::GaussianModel(std::vector<Source> sources, GaussianOptions options)
-    : sources_(std::move(sources)), opt_(options), tables_(std::make_unique<Tables>())
+    : sources_(std::move(sources)), opt_(options), curves_(DispersionCurves::create(opt_.curves)),
+      tables_(std::make_unique<Tables>())
 {
+    if (!curves_) throw std::invalid_argument("unknown dispersion curves '" + opt_.curves + "'");
     for (std::size_t s = 0; s < sources_.size(); ++s)
     {
         const Source& src = sources_[s];
@@ -172,8 +154,8 @@ GaussianModel::GaussianModel(std::vector<Source> sources, GaussianOptions option
                 e.sz0 = (src.top - src.bottom) / (src.bottom <= 0 ? 2.15 : 4.3);
                 for (int c = 1; c <= 6; ++c)
                 {
-                    e.xy[c] = virtualDistance([c](double x) { return briggsSigmaY(c, x); }, e.sy0);
-                    e.xz[c] = virtualDistance([c](double x) { return briggsSigmaZ(c, x); }, e.sz0);
+                    e.xy[c] = virtualDistance([&, c](double x) { return curves_->sigmaY(c, x); }, e.sy0);
+                    e.xz[c] = virtualDistance([&, c](double x) { return curves_->sigmaZ(c, x); }, e.sz0);
                 }
             }
             elements_.push_back(e);
@@ -202,7 +184,7 @@ GaussianModel::GaussianModel(std::vector<Source> sources, GaussianOptions option
                     const double a = Tables::x0 * std::pow(Tables::ratio, k - 1);
                     const double b = a * Tables::ratio;
                     const double m = std::sqrt(a * b);
-                    auto f = [&](double x) { return x * integrand(briggsSigmaZ(c, x + e->xz[c]), e->h); };
+                    auto f = [&](double x) { return x * integrand(curves_->sigmaZ(c, x + e->xz[c]), e->h); };
                     v[k] = v[k - 1] + std::log(Tables::ratio) / 6 * (f(a) + 4 * f(m) + f(b));
                 }
                 for (auto& x : v) x *= std::sqrt(2 / M_PI);
@@ -213,14 +195,9 @@ GaussianModel::GaussianModel(std::vector<Source> sources, GaussianOptions option
 
 GaussianModel::~GaussianModel() = default;
 
-double GaussianModel::sigmaY(int cls, double u, double x) const
+std::string GaussianModel::dispersionTitle() const
 {
-    return opt_.constantK ? std::sqrt(2 * opt_.kH * x / u) : briggsSigmaY(cls, x);
-}
-
-double GaussianModel::sigmaZ(int cls, double u, double x) const
-{
-    return opt_.constantK ? std::sqrt(2 * opt_.kV * x / u) : briggsSigmaZ(cls, x);
+    return opt_.constantK ? "constant K" : curves_->title();
 }
 
 PlumeHour GaussianModel::hourConditions(const MetHour& m, int index) const
@@ -256,7 +233,7 @@ double GaussianModel::depletion(int cls, double u, double h, double x, double xz
     {
         const double xi = std::exp(la + k * dl);
         const double w = (k == 0 || k == n) ? 1 : (k % 2 ? 4 : 2);
-        const double sz = opt_.constantK ? std::sqrt(2 * opt_.kV * xi / u) : briggsSigmaZ(cls, xi + xz);
+        const double sz = opt_.constantK ? std::sqrt(2 * opt_.kV * xi / u) : curves_->sigmaZ(cls, xi + xz);
         s += w * xi * integrand(sz, h);
     }
     s *= dl / 3 * std::sqrt(2 / M_PI);
@@ -288,8 +265,8 @@ double GaussianModel::concentration(const PlumeHour& hr, const Receptor& r) cons
         }
         else
         {
-            sy = briggsSigmaY(cls, x + e.xy[cls]);
-            sz = briggsSigmaZ(cls, x + e.xz[cls]);
+            sy = curves_->sigmaY(cls, x + e.xy[cls]);
+            sz = curves_->sigmaZ(cls, x + e.xz[cls]);
         }
         if (std::abs(y) > 6 * sy) continue;
         double dep = 1.0;

@@ -7,9 +7,10 @@
 // mixing height z_i (images 2 i z_i +- h), replaced by uniform mixing
 // sqrt(2 pi) sigma_z / z_i once sigma_z > 1.6 z_i; D(x) the source-depletion
 // factor of dry deposition.  Stability: Pasquill-Gifford classes A..F (1..6)
-// from the 10-m wind, cloud cover and the sun's elevation; dispersion: Briggs'
-// rural sigma_y, sigma_z (or sigma^2 = 2 K x / u for the slender-plume check
-// against the Eulerian model).  Point sources; volume sources as virtual
+// from the 10-m wind, cloud cover and the sun's elevation; dispersion: the
+// rural curves of plume/Dispersion.hpp (ISC3's Pasquill-Gifford by default,
+// or Briggs'), or sigma^2 = 2 K x / u for the slender-plume check against the
+// Eulerian model.  Point sources; volume sources as virtual
 // point sources (sigma_y0 = side/4.3, sigma_z0 = height/2.15 on the ground,
 // /4.3 elevated); area sources integrated over an n x n subdivision.
 #include <array>
@@ -17,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "plume/Dispersion.hpp"
 #include "plume/Met.hpp"
 #include "plume/Sites.hpp"
 
@@ -35,9 +37,6 @@ double solarElevationDeg(double latitudeDeg, int dayOfYear, double solarHour);
 int stabilityClass(double u10, double cloudOktas, double sunElevationDeg);
 char className(int cls);
 
-// Briggs (1973) rural open-country curves, x in m.
-double briggsSigmaY(int cls, double x);
-double briggsSigmaZ(int cls, double x);
 // ISC rural wind-profile exponents for classes A..F
 double ruralWindExponent(int cls);
 
@@ -55,7 +54,8 @@ struct GaussianOptions
     double minWind = 1.0;       // m/s, ISC's floor for the wind at release height
     double windExponent = -1;   // power-law exponent to the release height; < 0: ISC rural by class
     double reduction = 0;       // removed fraction of controlled emissions
-    bool constantK = false;     // sigma^2 = 2 K x / u instead of Briggs
+    std::string curves = "isc3_rural";   // a name of DispersionCurves::curveNames()
+    bool constantK = false;     // sigma^2 = 2 K x / u instead of the curves
     double kH = 200, kV = 1;
     bool mixingLidStable = false;   // ISC: no lid for E and F
 };
@@ -80,16 +80,16 @@ public:
     double depletion(int cls, double u, double h, double x, double xzVirtual = 0) const;
 
     const GaussianOptions& options() const { return opt_; }
+    std::string dispersionTitle() const;
 
 private:
     struct Element;
     std::vector<Source> sources_;
     GaussianOptions opt_;
+    std::unique_ptr<const DispersionCurves> curves_;
     std::vector<Element> elements_;
     struct Tables;
     std::unique_ptr<Tables> tables_;
-    double sigmaY(int cls, double u, double x) const;
-    double sigmaZ(int cls, double u, double x) const;
 };
 
 } // namespace procsim::plume

@@ -25,10 +25,11 @@ const char* kHelp =
     "\n"
     "ISCST3-style steady Gaussian plume for each meteorology hour: Pasquill-\n"
     "Gifford class from wind, cloud and the sun's elevation (or a 'stability'\n"
-    "column), Briggs rural sigmas, reflection at the ground and the mixing height\n"
-    "(A-D; none for E, F as in ISC), dry deposition by source depletion; point,\n"
-    "area (integrated over n x n points) and volume (virtual point) sources;\n"
-    "flat terrain, no plume rise.\n"
+    "column), ISC3's rural Pasquill-Gifford sigmas (or Briggs' rural curves),\n"
+    "reflection at the ground and the mixing height (A-D; none for E, F as in\n"
+    "ISC), dry deposition by source depletion; point, area (integrated over\n"
+    "n x n points) and volume (virtual point) sources; flat terrain, no plume\n"
+    "rise.\n"
     "\n"
     "  -o DIR   output directory (default: results)\n"
     "\n"
@@ -37,7 +38,8 @@ const char* kHelp =
     "                           mixing_height_m, cloud_cover_oktas [, stability 1..6]\n"
     "  site: {latitude_deg: 14.5, start_day_of_year: 6, start_hour: 0}\n"
     "  deposition: {velocity_m_s: 0.005}          (0: no depletion)\n"
-    "  dispersion: {model: briggs_rural}          or {model: constant_k, K_H_m2_s, K_V_m2_s}\n"
+    "  dispersion: {model: isc3_rural}            (default), briggs_rural, or\n"
+    "                                             {model: constant_k, K_H_m2_s, K_V_m2_s}\n"
     "  area_subdivisions: 10\n"
     "  reduction: 0.8                             removed fraction of controlled emissions\n"
     "  sources / receptors                        as for 'procsim plume eulerian'\n"
@@ -83,17 +85,25 @@ GaussianSetup parseGaussianSetup(const YamlInput& in)
     {
         const YamlInput d = in.child("dispersion");
         d.rejectUnknown({"model", "K_H_m2_s", "K_V_m2_s"});
-        const std::string m = d.text("model", "briggs_rural");
+        const std::string m = d.text("model", o.curves);
         if (m == "constant_k")
         {
             o.constantK = true;
             o.kH = d.within("K_H_m2_s", 1e-6, 1e6, "m2/s");
             o.kV = d.within("K_V_m2_s", 1e-6, 1e6, "m2/s");
         }
-        else if (m != "briggs_rural")
+        else if (DispersionCurves::create(m))
         {
-            throw d.error("model", "briggs_rural or constant_k");
+            o.curves = m;
         }
+        else
+        {
+            std::string known;
+            for (const auto& n : DispersionCurves::curveNames()) known += n + ", ";
+            throw d.error("model", "one of " + known + "constant_k");
+        }
+        for (const char* k : {"K_H_m2_s", "K_V_m2_s"})
+            if (!o.constantK && d.has(k)) throw d.error(k, "no diffusivity: it is read for model constant_k only");
     }
     if (in.has("area_subdivisions"))
     {
@@ -198,7 +208,7 @@ int gaussianMain(int argc, char** argv)
     std::cout << "procsim plume gaussian: " << casePath << "\n  " << hours << " h, " << setup.sources.size()
               << " sources, " << nr << " receptors, reduction " << setup.options.reduction * 100
               << " %, deposition velocity " << setup.options.depositionVelocity << " m/s, dispersion "
-              << (setup.options.constantK ? "constant K" : "Briggs rural") << "\n  hours per class:";
+              << model.dispersionTitle() << "\n  hours per class:";
     for (int k = 1; k <= 6; ++k) std::cout << ' ' << className(k) << ' ' << classCount[k];
     std::cout << "\n\n  " << std::left << std::setw(12) << "receptor" << std::right << std::setw(12) << "mean"
               << std::setw(12) << "max 1-h" << std::setw(12) << "max 24-h" << "   [ug/m3]\n";

@@ -23,7 +23,7 @@ const char* kHelp =
     "  eulerian     advection-diffusion over terrain in terrain-following coordinates\n"
     "               (QUICK + Adams-Bashforth, K_H/K_V, 1/4-power wind), scenarios such\n"
     "               as an 80 % emission cut; receptor 1-h/24-h/weekly averages, ParaView\n"
-    "  gaussian     ISCST3-style Gaussian plume: Pasquill-Gifford classes, Briggs rural\n"
+    "  gaussian     ISCST3-style Gaussian plume: Pasquill-Gifford classes, ISC3 rural\n"
     "               sigmas, ground and mixing-height reflection, deposition by depletion\n"
     "  montecarlo   gamma fits of historical meteorology, N synthetic years (weighting w),\n"
     "               the Gaussian model for each: percentiles and exceedance probabilities\n";

@@ -34,6 +34,13 @@ Receptor receptor(double x, double y, double z)
     return r;
 }
 
+GaussianOptions briggs()
+{
+    GaussianOptions o;
+    o.curves = "briggs_rural";
+    return o;
+}
+
 PlumeHour westWind(double u10, int cls, double zi)
 {
     PlumeHour h;
@@ -45,6 +52,97 @@ PlumeHour westWind(double u10, int cls, double zi)
 }
 
 } // namespace
+
+// ISC3 rural Pasquill-Gifford curves, x in km (user's guide vol. II, Tables
+// 1-1 and 1-2): sigma_y = 465.11628 x tan(0.017453293 (c - d ln x)),
+// sigma_z = a x^b by range, A-C capped at 5000 m; values worked out from those
+// formulas with the guide's coefficients.  The guide's example: class D at
+// 1 km, sigma_y = 68.13 m, sigma_z = 32.09 m.  At a range boundary the upper
+// range applies, as in ISC3's code; just below it the lower one (the two
+// differ by 1e-7 .. 4e-4 there, above the 2e-9 tolerance).
+TEST(Isc3RuralCurves, HandComputedIncludingRangeBoundariesAndCap)
+{
+    struct Point
+    {
+        int cls;
+        double x, sy, sz;
+    };
+    const Point points[] = {
+        {4, 1000.0, 68.12674108, 32.093},         // D, 1 km
+        {1, 50.0, 14.39472091, 7.246283646},      // A: 122.800 x^0.94470
+        {1, 99.999999, 26.85390108, 13.94756399}, // A below 0.10 km
+        {1, 100.0, 26.85390132, 13.95329985},     // A at 0.10 km: 158.080 x^1.05420
+        {1, 3000.0, 546.3754955, 4642.877097},    // A: 453.850 x^2.11660
+        {1, 4000.0, 701.3404444, 5000},           // A: capped
+        {2, 199.9999, 36.16622559, 20.23260104},  // B below 0.20 km
+        {2, 200.0, 36.16624198, 20.23252497},     // B at 0.20 km
+        {2, 1000.0, 154.1197517, 109.3},
+        {3, 2000.0, 193.4454664, 115.2576136},    // C: 61.141 x^0.91465
+        {3, 150000.0, 8640.478505, 5000},         // C: capped
+        {4, 299.9999, 22.61085917, 12.09299809},  // D below 0.30 km
+        {4, 300.0, 22.6108661, 12.09298272},      // D at 0.30 km
+        {4, 10000.0, 543.6163326, 134.8851002},   // D at 10 km: 36.650 x^0.56589
+        {5, 99.9999, 6.123370097, 3.53419439},    // E below 0.10 km
+        {5, 100.0, 6.123375772, 3.534869244},     // E at 0.10 km
+        {5, 5000.0, 218.8610166, 55.7080905},
+        {5, 19999.99, 752.3210307, 109.3027244},
+        {5, 20000.0, 752.3213625, 109.3027251},
+        {6, 699.9999, 24.45649433, 10.93010043},  // F below 0.70 km
+        {6, 700.0, 24.45649753, 10.9298441},      // F at 0.70 km
+        {6, 20000.0, 500.9488059, 60.29440211},
+        {6, 60000.0, 1308.696345, 83.25506022},   // F beyond 60 km: 34.219 x^0.21716
+    };
+    const Isc3RuralCurves pg;
+    for (const auto& p : points)
+    {
+        EXPECT_NEAR(pg.sigmaY(p.cls, p.x), p.sy, 2e-9 * p.sy) << className(p.cls) << " x = " << p.x;
+        EXPECT_NEAR(pg.sigmaZ(p.cls, p.x), p.sz, 2e-9 * p.sz) << className(p.cls) << " x = " << p.x;
+    }
+    EXPECT_NEAR(pg.sigmaY(4, 1000), 68.13, 0.005);   // the guide's rounded figures
+    EXPECT_NEAR(pg.sigmaZ(4, 1000), 32.09, 0.005);
+}
+
+// Briggs rural at x = 500 m (the formulas in the next test's comment)
+TEST(BriggsRuralCurves, HandComputed)
+{
+    const BriggsRuralCurves b;
+    const double sy[7] = {0, 107.349008, 78.072006, 53.674504, 39.036003, 29.277002, 19.518001};
+    const double sz[7] = {0, 100, 60, 38.138504, 22.677868, 13.043478, 6.956522};
+    for (int cls = 1; cls <= 6; ++cls)
+    {
+        EXPECT_NEAR(b.sigmaY(cls, 500), sy[cls], 1e-6) << className(cls);
+        EXPECT_NEAR(b.sigmaZ(cls, 500), sz[cls], 1e-6) << className(cls);
+    }
+}
+
+TEST(DispersionCurves, KnownNamesDefaultFirst)
+{
+    const auto& names = DispersionCurves::curveNames();
+    ASSERT_EQ(names.size(), 2u);
+    EXPECT_EQ(names[0], GaussianOptions{}.curves);   // the default is listed first
+    EXPECT_EQ(names[0], "isc3_rural");
+    for (const auto& n : names) EXPECT_NE(DispersionCurves::create(n), nullptr) << n;
+    EXPECT_EQ(DispersionCurves::create("pasquill"), nullptr);
+    GaussianOptions o;
+    o.curves = "pasquill";
+    EXPECT_THROW(GaussianModel({point(0, 0, 20, 10)}, o), std::invalid_argument);
+}
+
+// The default (ISC3) curves in the plume equation: as the Briggs test below,
+// Q = 10 g/s, h = 20 m, receptor (500, 50, 1.5) m, u = 3 (20/10)^p, with
+//   A: sy = 113.039653, sz = 104.653137 (x = 0.5 km: 453.850 x^2.11660)
+//   B: 82.752239, 51.092853;  C: 54.771098, 32.433622;  D: 36.146193, 18.296893
+//   E: 27.016034, 12.801388;  F: 17.966060, 8.395559
+TEST(GaussianHandComputed, EachStabilityClassIsc3)
+{
+    const double expectedUg[7] = {0, 76.0703373, 184.421049, 303.56885, 305.819151, 129.397008, 6.29187548};
+    GaussianModel m({point(0, 0, 20, 10)}, GaussianOptions{});
+    for (int cls = 1; cls <= 6; ++cls)
+    {
+        const double c = m.concentration(westWind(3.0, cls, 5000), receptor(500, 50, 1.5)) * 1e9;
+        EXPECT_NEAR(c, expectedUg[cls], 1e-6 * expectedUg[cls]) << "class " << className(cls);
+    }
+}
 
 // Q = 10 g/s at h = 20 m; receptor 500 m downwind, 50 m crosswind, 1.5 m up;
 // u10 = 3 m/s raised to 20 m with the ISC rural exponent p of the class,
@@ -58,12 +156,24 @@ PlumeHour westWind(double u10, int cls, double zi)
 TEST(GaussianHandComputed, EachStabilityClass)
 {
     const double expectedUg[7] = {0, 82.797563, 166.225550, 272.961630, 322.215016, 157.910250, 3.766592};
-    GaussianModel m({point(0, 0, 20, 10)}, GaussianOptions{});
+    GaussianModel m({point(0, 0, 20, 10)}, briggs());
     for (int cls = 1; cls <= 6; ++cls)
     {
         const double c = m.concentration(westWind(3.0, cls, 5000), receptor(500, 50, 1.5)) * 1e9;
         EXPECT_NEAR(c, expectedUg[cls], 1e-5 * expectedUg[cls]) << "class " << className(cls);
     }
+}
+
+// The vertical term without a lid is the source and its image below the
+// ground: V = exp(-(z-h)^2/2sz^2) + exp(-(z+h)^2/2sz^2).  h = 20 m, sz = 10 m:
+//   z = 0:  2 exp(-2)                    = 0.2706705664732254 (the ground doubles it)
+//   z = 5:  exp(-1.125) + exp(-3.125)    = 0.3685894009817572
+//   z = 20: 1 + exp(-8)                  = 1.0003354626279024
+TEST(GaussianHandComputed, GroundReflection)
+{
+    EXPECT_NEAR(verticalTerm(0, 20, 10, 0), 0.2706705664732254, 1e-14);
+    EXPECT_NEAR(verticalTerm(5, 20, 10, 0), 0.3685894009817572, 1e-14);
+    EXPECT_NEAR(verticalTerm(20, 20, 10, 0), 1.0003354626279024, 1e-14);
 }
 
 // Class C at x = 3000 m: sz = 0.08*3000/sqrt(1.6) = 189.737 m; u = 3 * 2^0.10.
@@ -72,7 +182,7 @@ TEST(GaussianHandComputed, EachStabilityClass)
 //  zi = 100 m (sz > 1.6 zi): uniform mixing C = Q / (sqrt(2 pi) u sy zi) = 4.286902e-8.
 TEST(GaussianHandComputed, MixingHeightReflectionAndUniformMixing)
 {
-    GaussianModel m({point(0, 0, 20, 10)}, GaussianOptions{});
+    GaussianModel m({point(0, 0, 20, 10)}, briggs());
     EXPECT_NEAR(m.concentration(westWind(3.0, 3, 200), receptor(3000, 0, 1.5)), 2.191467e-8, 1e-5 * 2.191467e-8);
     EXPECT_NEAR(m.concentration(westWind(3.0, 3, 100), receptor(3000, 0, 1.5)), 4.286902e-8, 1e-5 * 4.286902e-8);
     // release above the mixing layer (unstable/neutral): nothing at the ground
@@ -99,8 +209,13 @@ TEST(GaussianHandComputed, VolumeSourceAsVirtualPointSource)
     v.top = 21.5;
     v.height = 10.75;
     v.rate = 5e-3;
-    GaussianModel m({v}, GaussianOptions{});
+    GaussianModel m({v}, briggs());
     EXPECT_NEAR(m.concentration(westWind(2.0, 4, 5000), receptor(400, 0, 0)), 6.835578e-7, 1e-5 * 6.835578e-7);
+    // ISC3 curves: sy(xy) = 10 at xy = 123.897209 m, sz(xz) = 10 at
+    // xz = 241.116040 m (roots of the formulas above), so sy = sy(523.897209)
+    // = 37.726602, sz = sz(641.116040) = 22.382138: C = 8.30687421e-7 kg/m3
+    GaussianModel pg({v}, GaussianOptions{});
+    EXPECT_NEAR(pg.concentration(westWind(2.0, 4, 5000), receptor(400, 0, 0)), 8.30687421e-7, 1e-6 * 8.30687421e-7);
 }
 
 TEST(GaussianHandComputed, SmallAreaSourceActsAsPointSourceFarAway)
@@ -130,12 +245,28 @@ TEST(GaussianDeposition, SourceDepletionClassAGroundRelease)
 {
     GaussianOptions with;
     with.depositionVelocity = 0.01;
+    with.curves = "briggs_rural";
     GaussianModel dep({point(0, 0, 0, 1)}, with);
-    GaussianModel none({point(0, 0, 0, 1)}, GaussianOptions{});
+    GaussianModel none({point(0, 0, 0, 1)}, briggs());
     const auto h = westWind(2.0, 1, 5000);   // ground source: u = u10
     const double ratio = dep.concentration(h, receptor(800, 0, 0)) / none.concentration(h, receptor(800, 0, 0));
     EXPECT_NEAR(ratio, 0.875168612, 2e-4);   // tabulated integral, interpolated in ln x
     EXPECT_NEAR(dep.depletion(1, 2.0, 0.0, 800), 0.875168612, 1e-6);
+}
+
+// ISC3 class C is one power law, sz = a (x/1000)^b (a = 61.141, b = 0.91465),
+// so for a ground release int_1^x dxi/sz = 1000^b/a (x^(1-b) - 1)/(1 - b);
+// vd = 0.01, u = 2, x = 800 m: Q/Q0 = 0.7217240041312871.
+TEST(GaussianDeposition, SourceDepletionIsc3ClassCGroundRelease)
+{
+    GaussianOptions with;
+    with.depositionVelocity = 0.01;
+    GaussianModel dep({point(0, 0, 0, 1)}, with);
+    GaussianModel none({point(0, 0, 0, 1)}, GaussianOptions{});
+    const auto h = westWind(2.0, 3, 5000);
+    const double ratio = dep.concentration(h, receptor(800, 0, 0)) / none.concentration(h, receptor(800, 0, 0));
+    EXPECT_NEAR(ratio, 0.7217240041312871, 2e-4);
+    EXPECT_NEAR(dep.depletion(3, 2.0, 0.0, 800), 0.7217240041312871, 1e-6);
 }
 
 // Constant K: sz = sqrt(2 K x / u); for h = 0 the integral is

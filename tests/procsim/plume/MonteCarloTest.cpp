@@ -69,6 +69,27 @@ TEST(GammaFit, QuantileInvertsTheDistribution)
     }
 }
 
+// Closed forms: psi(1) = -gamma_Euler, psi(1/2) = -gamma_Euler - 2 ln 2,
+// psi(x + 1) = psi(x) + 1/x; psi'(1) = pi^2/6, psi'(1/2) = pi^2/2;
+// P(1/2, x) = erf(sqrt x); Phi^-1(0.975) = 1.959963984540054.
+TEST(GammaFit, SpecialFunctionsAgainstClosedForms)
+{
+    const double euler = 0.5772156649015329;
+    EXPECT_NEAR(digamma(1.0), -euler, 1e-15);
+    EXPECT_NEAR(digamma(0.5), -euler - 2 * std::log(2.0), 1e-15);
+    EXPECT_NEAR(digamma(3.5), digamma(2.5) + 1 / 2.5, 1e-15);
+    EXPECT_NEAR(trigamma(1.0), M_PI * M_PI / 6, 1e-15);
+    EXPECT_NEAR(trigamma(0.5), M_PI * M_PI / 2, 1e-14);
+    for (double x : {1e-3, 0.2, 2.0, 30.0}) EXPECT_NEAR(gammaP(0.5, x), std::erf(std::sqrt(x)), 1e-15) << x;
+    EXPECT_NEAR(inverseNormal(0.975), 1.959963984540054, 1e-14);
+    EXPECT_NEAR(inverseNormal(0.025), -1.959963984540054, 1e-14);
+    // far upper tail of the exponential, kept to its digits: x = -theta ln(1 - Phi(z))
+    GammaFit e;
+    e.shape = 1;
+    e.scale = 1;
+    EXPECT_NEAR(gammaQuantileZ(e, 6.5), -std::log(normalCdf(-6.5)), 1e-12 * 25);
+}
+
 TEST(SyntheticMet, KeepsTheFittedGammaAndTheWeighting)
 {
     // one climate for every month/block: speed ~ Gamma(2, 0.8)

@@ -4,10 +4,13 @@
 // limit) against both.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "plume/Eulerian.hpp"
+#include "plume/EulerianCase.hpp"
 #include "plume/Gaussian.hpp"
 
 using namespace procsim::plume;
@@ -70,7 +73,13 @@ TEST(SlenderPlume, EulerianAndGaussianAgreeWithTheExactSolution)
     h.cls = 4;
     h.mixingHeight = H;
 
-    double worstG = 0, worstE = 0;
+    // Largest deviations measured: Gaussian 0.83 %, the slender-plume error
+    // ~ K_H/(u x) of dropping the along-wind diffusion (<= 0.8 % at 610 m
+    // for K_H = 10, u = 2); Eulerian 2.03 %, the 2nd-order discretisation on
+    // 20 x 20 x 10 m cells.  The bounds sit just above them, so a change in
+    // either model that costs a few tenths of a per cent is caught.
+    const double tolGaussian = 0.0085, tolEulerian = 0.021;
+    double worstG = 0, worstE = 0, worstEG = 0;
     for (double x : {610.0, 1010.0, 1510.0})
         for (double y : {0.0, 60.0})
             for (double z : {5.0, 55.0})
@@ -84,14 +93,106 @@ TEST(SlenderPlume, EulerianAndGaussianAgreeWithTheExactSolution)
                 const double gau = gm.concentration(h, r);
                 worstG = std::max(worstG, std::abs(gau / exact - 1));
                 worstE = std::max(worstE, std::abs(eul / exact - 1));
-                // slender-plume error of the Gaussian ~ K_H/(u x) <= 2.5 %
-                // here; the Eulerian error is the 2nd-order discretisation
-                EXPECT_NEAR(gau, exact, 0.04 * exact) << "Gaussian x=" << x << " y=" << y << " z=" << z;
-                EXPECT_NEAR(eul, exact, 0.04 * exact) << "Eulerian x=" << x << " y=" << y << " z=" << z;
-                EXPECT_NEAR(eul, gau, 0.05 * gau) << "x=" << x << " y=" << y << " z=" << z;
+                worstEG = std::max(worstEG, std::abs(eul / gau - 1));
+                EXPECT_NEAR(gau, exact, tolGaussian * exact) << "Gaussian x=" << x << " y=" << y << " z=" << z;
+                EXPECT_NEAR(eul, exact, tolEulerian * exact) << "Eulerian x=" << x << " y=" << y << " z=" << z;
+                // the two errors may add, never more
+                EXPECT_NEAR(eul, gau, (tolGaussian + tolEulerian) * gau) << "x=" << x << " y=" << y << " z=" << z;
             }
-    std::printf("largest deviation from the exact solution: Gaussian %.2f %%, Eulerian %.2f %%\n",
-                100 * worstG, 100 * worstE);
+    std::printf("largest deviation from the exact solution: Gaussian %.2f %%, Eulerian %.2f %%; "
+                "Eulerian from Gaussian %.2f %%\n",
+                100 * worstG, 100 * worstE, 100 * worstEG);
+}
+
+namespace
+{
+
+// The slender-plume problem with the point source placed by
+// distributeSources; concentrations at `receptors` (x, y, height) after 1800 s.
+std::vector<double> pointSourceRun(const TerrainGrid& g, const std::vector<std::array<double, 3>>& receptors)
+{
+    const double u = 2.0, kH = 10.0, kV = 2.0;
+    WindModel wind(g, 0.0, 10.0);
+    Transport t(g, kH, kV);
+    t.setFlow(wind.flow(u, 270.0));
+    Source s;
+    s.name = "S";
+    s.type = Source::Type::Point;
+    s.x = 210;
+    s.y = 0;
+    s.height = 55;
+    s.rate = 1e-3;
+    t.setSources(distributeSources(g, {s}, 0.0));
+    const int steps = static_cast<int>(std::ceil(1800.0 / (0.9 * t.stableDt())));
+    for (int n = 0; n < steps; ++n) t.step(1800.0 / steps);
+    std::vector<double> c;
+    for (const auto& r : receptors) c.push_back(t.sample(r[0], r[1], r[2]));
+    return c;
+}
+
+} // namespace
+
+// The same point source (210, 0, 55) m on two grids of 20 x 20 x 10 m cells:
+// on grid A it sits at a cell centre, on grid B -- shifted by half a cell in
+// x, y and z (a 5 m ground cell under the 10 m cells) -- on a corner of eight
+// cells.  Placed in the cell that contains it, the source moved by half a
+// cell on grid B (to 220, 10, 60 m), a first-order error: up to 56 % at
+// these receptors, about -13 % at the ground 1 km downwind (exp(-(60^2 -
+// 55^2) / (2 sigma_z^2)), sigma_z^2 = 2 K_V x/u).  Spread by trilinear weights it keeps
+// its position, and what is left is second order, the spread itself: on grid
+// B the source is the mean of eight point sources at (210 +- 10, 0 +- 10,
+// 55 +- 5) m.  So
+//  - grid B must match the mean of those eight exact solutions as closely as
+//    grid A matches the exact one (2.1 %, the bound of the test above: same
+//    scheme, same cell size; measured 1.1 % and 2.0 %);
+//  - beyond 800 m, where the added variance (dz^2/4 = 25 m^2 against
+//    sigma_z^2 >= 1600 m^2, dx^2/4 = 100 m^2 against sigma_y^2 >= 8000 m^2)
+//    changes the exact values by at most 1.3 %, the two grids must agree to
+//    2.5 % outright (that plus the grids' discretisation errors, which differ
+//    in sign; measured 2.3 %).  At 400 m the spread alone is worth 3.7 %.
+TEST(SlenderPlume, PointSourceResultDoesNotDependOnWhereTheFacesFall)
+{
+    const double H = 200.0;
+    const TerrainGrid a = TerrainGrid::box(100, 31, 20, 0.0, -310.0, 20.0, 20.0, H);
+    TerrainGrid b = TerrainGrid::box(101, 32, 21, -10.0, -320.0, 20.0, 20.0, H);
+    // faces 0, 5, 15, ..., 195, 200 m: the 10 m cells of grid A shifted by 5 m
+    for (int k = 1; k < b.nz; ++k) b.fFace[k] = (5.0 + 10.0 * (k - 1)) / H;
+    for (int k = 0; k < b.nz; ++k) b.fCell[k] = 0.5 * (b.fFace[k] + b.fFace[k + 1]);
+    ASSERT_NEAR(b.xc(10) + 0.5 * b.dx, 210.0, 1e-9);   // the source on faces of grid B
+    ASSERT_NEAR(b.yc(15) + 0.5 * b.dy, 0.0, 1e-9);
+    ASSERT_NEAR(H * b.fFace[6], 55.0, 1e-9);
+    ASSERT_NEAR(a.zc(10, 15, 5), 55.0, 1e-9);          // and at a centre of grid A
+
+    std::vector<std::array<double, 3>> receptors;
+    for (double x : {610.0, 1010.0, 1510.0})
+        for (double y : {0.0, 60.0})
+            for (double z : {5.0, 55.0}) receptors.push_back({x, y, z});
+    const auto ca = pointSourceRun(a, receptors), cb = pointSourceRun(b, receptors);
+    auto exact = [&](const std::array<double, 3>& r, double xs, double ys, double zs) {
+        return exactPointSource(1e-3, 2.0, 10.0, 2.0, zs, H, r[0] - xs, r[1] - ys, r[2]);
+    };
+    double worstFar = 0, worstB = 0;
+    for (std::size_t n = 0; n < receptors.size(); ++n)
+    {
+        const auto& r = receptors[n];
+        const double point = exact(r, 210, 0, 55);
+        double spread = 0;
+        for (double dx : {-10.0, 10.0})
+            for (double dy : {-10.0, 10.0})
+                for (double dz : {-5.0, 5.0}) spread += exact(r, 210 + dx, dy, 55 + dz) / 8;
+        const std::string at = "x=" + std::to_string(r[0]) + " y=" + std::to_string(r[1]) + " z=" + std::to_string(r[2]);
+        EXPECT_NEAR(ca[n], point, 0.021 * point) << "grid A " << at;
+        EXPECT_NEAR(cb[n], spread, 0.021 * spread) << "grid B " << at;
+        worstB = std::max(worstB, std::abs(cb[n] / spread - 1));
+        if (r[0] - 210 >= 800)
+        {
+            EXPECT_NEAR(cb[n], ca[n], 0.025 * ca[n]) << at;
+            worstFar = std::max(worstFar, std::abs(cb[n] / ca[n] - 1));
+        }
+    }
+    std::printf("point source on faces: %.2f %% from its exact solution; beyond 800 m %.2f %% from the "
+                "same source at a cell centre\n",
+                100 * worstB, 100 * worstFar);
 }
 
 namespace
@@ -155,6 +256,9 @@ TEST(SlenderPlume, PointSource3DConvergesUnderRefinement)
     const double e1 = error3D(1), e2 = error3D(2);
     const double p = std::log2(e1 / e2);
     std::printf("3D box source, QUICK: relative L2 errors %.3e (40 m), %.3e (20 m); observed order %.2f\n", e1, e2, p);
-    EXPECT_NEAR(p, 2.0, 0.4);   // two coarse grids: pre-asymptotic, hence the wider band
-    EXPECT_LT(e2, 0.02);
+    // measured: 6.52e-2, 1.47e-2, order 2.15 (README); two coarse grids are
+    // pre-asymptotic, so the order is held to 2 +- 0.25 and the fine error
+    // to what it reaches
+    EXPECT_NEAR(p, 2.0, 0.25);
+    EXPECT_LT(e2, 0.016);
 }
