@@ -4,7 +4,8 @@ tray-dryer paper (Table 1), the definitions of X, eta and E, and the rules the
 command promises (acceptance of a profile refit, the best what-if setting).
 
 usage: check_cli.py CHECK OUT_DIR PROCSIM ARG...   (CHECK: metrics, simulate,
-whatif, calibrate; OUT_DIR is emptied first and must be the command's --out)
+whatif, calibrate, calibrate_plant; OUT_DIR is emptied first and must be the
+command's --out)
 
 Exits 0 if every check holds, 1 with one line per failed check otherwise.
 Standard library only."""
@@ -157,6 +158,22 @@ def check_calibrate(out, c, stdout):
     c.true('modified vents faster than the old', float(b['time_central_h']) < float(a['time_central_h']))
 
 
+def check_calibrate_plant(out, c, stdout):
+    # plant.yaml, fitted on batches 1-3 (old vents), predicting 4-5 (modified)
+    cal = {r['batch']: r for r in rows(os.path.join(out, 'calibration.csv'))}
+    c.true('five batches', sorted(cal) == ['1', '2', '3', '4', '5'], ', '.join(sorted(cal)))
+    for b, (rate, hours, kwh) in sorted(PAPER_INPUTS.items()):
+        r = cal[b]
+        c.true('batch %s fitted on the old vents' % b, r['role'] == 'fitted' and r['venting'] == 'old')
+        c.near('batch %s measured time is Table 1\'s' % b, float(r['time_measured_h']), hours, 1e-4)
+        c.near('batch %s measured electricity is Table 1\'s' % b, float(r['electricity_measured_kWh']), kwh, 1e-9)
+        # the acceptance of a refit (README): time within 3 %, electricity within 6 %
+        c.near('batch %s fitted time' % b, float(r['time_central_h']), hours, 0.03)
+        c.near('batch %s fitted electricity' % b, float(r['electricity_central_kWh']), kwh, 0.06)
+    for b in ('4', '5'):
+        c.true('batch %s predicted on the modified vents' % b, cal[b]['role'] == 'predicted' and cal[b]['venting'] == 'modified')
+
+
 def main(argv):
     check, out, command = argv[1], argv[2], argv[3:]
     shutil.rmtree(out, ignore_errors=True)
@@ -166,7 +183,7 @@ def main(argv):
     c.true('exit status 0', run.returncode == 0, str(run.returncode))
     if run.returncode == 0:
         {'metrics': check_metrics, 'simulate': check_simulate, 'whatif': check_whatif,
-         'calibrate': check_calibrate}[check](out, c, run.stdout)
+         'calibrate': check_calibrate, 'calibrate_plant': check_calibrate_plant}[check](out, c, run.stdout)
     if c.failed:
         print('%d check(s) failed: %s' % (len(c.failed), '; '.join(c.failed)))
         return 1
