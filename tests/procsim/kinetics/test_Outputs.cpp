@@ -35,7 +35,7 @@ TEST(KineticsOutputs, TimeseriesColumnsAreConsistent)
         }
         EXPECT_NEAR(row[t.column("TOC_mgC_per_L", f)], tocFromColumns, 1e-8 * tocFromColumns);
         EXPECT_NEAR(row[t.column("CO2_formed_mol", f)], co2, 1e-8 * std::max(co2, 1e-12));
-        EXPECT_LT(row[t.column("carbon_balance_rel_error", f)], 1e-9);
+        EXPECT_LT(row[t.column("carbon_balance_rel_error", f)], 1e-11);   // round-off, see test_Solvers
     }
     // initial TOC: 30 mg/L phenol is 30 * 72.066 / 94.113 mg C/L
     EXPECT_NEAR(t.rows.front()[t.column("TOC_mgC_per_L", f)], 30.0 * 6 * 12.011 / 94.113, 1e-9);
