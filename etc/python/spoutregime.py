@@ -210,6 +210,31 @@ def write_csv(verdict, path):
                        s.fountain, s.open_core, s.upward, s.has_fountain, s.spouts))
 
 
+# The pressure drop of a spouting bed against the weight per unit area of
+# the bed column above the probe, p_col = rho_p g phi_a (H_s - z_probe), the
+# pressure drop the column would carry fluidised.  The annulus is a packed,
+# unfluidised bed, so its gas pressure gradient stays below rho_p g phi_a
+# (else it lifts); the spout and the annulus meet below H_e and both end at
+# the outlet pressure above the bed, so the time-averaged probe pressure
+# cannot exceed p_col.  A spouting bed stays well above zero: the papers'
+# spouting beds give 1.40 kPa against a p_col of about 6.3 kPa (plates, 0.9 m,
+# 0.22) and 1.75 kPa against 2.7 kPa (no plates, 0.409 m, 0.64) at u_ms,
+# changing little above it; a tenth of p_col still catches a probe that
+# reads the freeboard or a gas that carries nothing.
+PRESSURE_BAND = (0.1, 1.0)
+
+
+def column_weight(verdict, rho_p, z_probe):
+    """p_col [Pa] from the window's mean bed surface and annulus solid
+    fraction; nan without snapshots."""
+    s = verdict.snapshots
+    if not s:
+        return float('nan')
+    surface = sum(x.surface for x in s) / len(s)
+    phi = sum(x.annulus_fraction for x in s) / len(s)
+    return rho_p * 9.81 * phi * max(surface - z_probe, 0.0)
+
+
 def region_from_text(text, g, what):
     """A region given as 'HALF_WIDTH_MM,BOTTOM_MM' on a command line."""
     try:
