@@ -1,0 +1,253 @@
+"""Does the bed spout?  A measured criterion on the particle output, the
+same for the vessel with draft plates and without.
+
+The spout region is a vertical column |x - axis| <= half_width from a
+height `bottom` up to the bed surface: by default the gap between the
+plates' inner faces (half width W_d/2) from their lower edge H_e; without
+plates the central column of the same width and height, so that the two
+designs are judged alike.  Both are parameters (SpoutRegion).
+
+At each particle write time (a snapshot) three things are measured:
+
+  bed surface  the top of the highest 19-mm layer (a gas cell, 2.4 d_p)
+               outside the column whose solid fraction is at least
+               SURFACE_FRACTION = 0.25, half that of a packed bed (0.55-0.6):
+               the fountain's rain over the annulus stays far below it.
+  open core    every layer (38 mm, 4.75 d_p) of the column between `bottom`
+               and the surface holds less than DILUTE_RATIO = 0.5 of the
+               solid fraction of the annulus below the surface (a working
+               spout: 0.02-0.17 against 0.58, measured with plates at
+               2 m/s); a bubble or a slug leaves dense layers between voids.
+  upward flux  the particles in that part of the column rise on average by
+               at least UPWARD_VELOCITY = 0.1 m/s (a spout: 0.8-1.5 m/s; a
+               packed bed: 0; about a third of sqrt(g d_p)), so the solid
+               flux on the axis is upward.
+  fountain     at least FOUNTAIN_PARTICLES = 5 particles in the column
+               above the bed surface.
+
+A snapshot spouts when all three hold; the bed spouts when at least
+PERSISTENCE = 0.8 of the snapshots in the averaging window spout, so a
+bubble that erupts through the surface now and then (intermittently open
+core and fountain) does not count as a spout, and a spout that pinches off
+at one write time of five still does."""
+import math
+
+SURFACE_LAYER = 0.019
+SURFACE_FRACTION = 0.25
+CORE_LAYER = 0.038
+DILUTE_RATIO = 0.5
+UPWARD_VELOCITY = 0.1
+FOUNTAIN_PARTICLES = 5
+PERSISTENCE = 0.8
+
+
+class SpoutRegion:
+    """|x - axis| <= half_width, z >= bottom [m]."""
+
+    def __init__(self, half_width, bottom, axis=0.0):
+        if not (half_width > 0 and bottom >= 0):
+            raise ValueError('spout region: expected a positive half width and a bottom '
+                             '>= 0, got %g and %g m' % (half_width, bottom))
+        self.half_width, self.bottom, self.axis = half_width, bottom, axis
+
+    @classmethod
+    def of(cls, g, half_width=None, bottom=None):
+        """The default region of a vessel (spoutedbed.Geometry, in mm):
+        between the plates, or where they would be."""
+        return cls(g.Wd / 2000 if half_width is None else half_width,
+                   g.He / 1000 if bottom is None else bottom)
+
+    def inside(self, x):
+        return abs(x - self.axis) <= self.half_width
+
+
+class VesselSection:
+    """Horizontal widths of the vessel [m]: the slanted base narrows it to
+    the slot, the plates (if any) take their thickness beside the column."""
+
+    def __init__(self, g, region):
+        mm = 1e-3
+        self.W, self.Wi, self.Lb = g.W * mm, g.Wi * mm, g.Lb * mm
+        self.tan = g.tan
+        self.plates = g.plates
+        self.t, self.He, self.Hd = g.t * mm, g.He * mm, g.Hd * mm
+        self.region = region
+
+    def width(self, z):
+        return min(self.W, self.Wi + 2 * max(z, 0.0) / self.tan)
+
+    def column_width(self, z):
+        return min(2 * self.region.half_width, self.width(z))
+
+    def outside_width(self, z):
+        plate = 2 * self.t if self.plates and self.He <= z <= self.Hd else 0.0
+        return max(0.0, self.width(z) - self.column_width(z) - plate)
+
+    def volume(self, width, z0, z1, steps=8):
+        """Lb times the integral of width(z) over [z0, z1] (midpoint rule)."""
+        h = (z1 - z0) / steps
+        return self.Lb * h * sum(width(z0 + (k + 0.5) * h) for k in range(steps))
+
+
+class Snapshot:
+    """What one particle write time shows; see the module docstring."""
+
+    def __init__(self, time, surface, annulus_fraction, core_fractions, core_velocity,
+                 fountain):
+        self.time = time
+        self.surface = surface
+        self.annulus_fraction = annulus_fraction
+        self.core_fractions = core_fractions
+        self.core_velocity = core_velocity
+        self.fountain = fountain
+        self.open_core = bool(core_fractions) and annulus_fraction > 0 and \
+            max(core_fractions) < DILUTE_RATIO * annulus_fraction
+        self.upward = core_velocity is not None and core_velocity >= UPWARD_VELOCITY
+        self.has_fountain = fountain >= FOUNTAIN_PARTICLES
+        self.spouts = self.open_core and self.upward and self.has_fountain
+
+    def densest_core_ratio(self):
+        if not self.core_fractions or not self.annulus_fraction > 0:
+            return float('nan')
+        return max(self.core_fractions) / self.annulus_fraction
+
+
+def measure(g, region, points, vz, radii, time=0.0):
+    """The Snapshot of one particle field: positions [m], vertical
+    velocities [m/s], radii [m]."""
+    section = VesselSection(g, region)
+    volumes = [4 / 3 * math.pi * r ** 3 for r in radii]
+    outside = [(p[2], v) for p, v in zip(points, volumes) if not region.inside(p[0])]
+    # the bed surface, from the layers outside the column
+    layers = max(1, int(math.ceil(max([g.H / 1000] + [z for z, _ in outside]) / SURFACE_LAYER)))
+    solid = [0.0] * layers
+    for z, v in outside:
+        solid[min(layers - 1, max(0, int(z // SURFACE_LAYER)))] += v
+    surface = 0.0
+    for k in range(layers):
+        room = section.volume(section.outside_width, k * SURFACE_LAYER, (k + 1) * SURFACE_LAYER)
+        if room > 0 and solid[k] / room >= SURFACE_FRACTION:
+            surface = (k + 1) * SURFACE_LAYER
+    # the annulus below the surface (its top layer, half filled, left out)
+    top = surface - SURFACE_LAYER
+    lo = min(region.bottom, max(top - SURFACE_LAYER, 0.0))
+    room = section.volume(section.outside_width, lo, top) if top > lo else 0.0
+    annulus = (sum(v for z, v in outside if lo <= z < top) / room) if room > 0 else 0.0
+    # the column: layers from its bottom to the surface, and above it
+    core_fractions, rising = [], []
+    fountain = 0
+    height = surface - region.bottom
+    n = int(height // CORE_LAYER) if height >= CORE_LAYER else 0
+    h = height / n if n else 0.0
+    solid = [0.0] * n
+    for p, w, v in zip(points, vz, volumes):
+        if not region.inside(p[0]):
+            continue
+        z = p[2]
+        if z >= surface:
+            fountain += 1
+        elif n and z >= region.bottom:
+            solid[min(n - 1, int((z - region.bottom) // h))] += v
+            rising.append(w)
+    for k in range(n):
+        z0 = region.bottom + k * h
+        core_fractions.append(solid[k] / section.volume(section.column_width, z0, z0 + h))
+    velocity = sum(rising) / len(rising) if rising else None
+    return Snapshot(time, surface, annulus, core_fractions, velocity, fountain)
+
+
+class Verdict:
+    """The bed over a window of snapshots."""
+
+    def __init__(self, snapshots):
+        self.snapshots = snapshots
+        n = len(snapshots)
+        self.count = n
+        self.fraction = sum(s.spouts for s in snapshots) / n if n else 0.0
+        self.spouts = n > 0 and self.fraction >= PERSISTENCE
+
+    def share(self, attribute):
+        n = len(self.snapshots)
+        return sum(bool(getattr(s, attribute)) for s in self.snapshots) / n if n else 0.0
+
+    def describe(self):
+        if not self.snapshots:
+            return 'not decided: no particle file in the averaging window'
+        return ('%s: %d of %d particle write times (t = %g-%g s) spout (need %.0f %%): '
+                'open core %.0f %%, upward flux %.0f %%, fountain %.0f %%'
+                % ('SPOUTS' if self.spouts else 'does NOT spout',
+                   round(self.fraction * self.count), self.count, self.snapshots[0].time,
+                   self.snapshots[-1].time, 100 * PERSISTENCE, 100 * self.share('open_core'),
+                   100 * self.share('upward'), 100 * self.share('has_fountain')))
+
+
+def classify_case(g, case='.', start=0.0, region=None):
+    """Verdict over the particle files particles/particles_<t>.vtp with
+    t >= start."""
+    import mixing
+    import spoutlab_case as sc
+    region = region or SpoutRegion.of(g)
+    snapshots = []
+    for t, path in mixing.particle_files(case):
+        if t < start - 1e-9:
+            continue
+        points = sc.read_vtp_points(path)
+        vz = sc.read_vtp_array(path, 'velocity')[2::3]
+        radii = sc.read_vtp_array(path, 'radius')
+        snapshots.append(measure(g, region, points, vz, radii, t))
+    return Verdict(snapshots)
+
+
+def write_csv(verdict, path):
+    with open(path, 'w') as f:
+        f.write('time [s],bed surface [m],annulus solid fraction,densest core layer / annulus,'
+                'core mean vertical velocity [m/s],fountain particles,open core,upward flux,'
+                'fountain,spouts\n')
+        for s in verdict.snapshots:
+            f.write('%.6g,%.4g,%.4g,%.4g,%.4g,%d,%d,%d,%d,%d\n'
+                    % (s.time, s.surface, s.annulus_fraction, s.densest_core_ratio(),
+                       s.core_velocity if s.core_velocity is not None else float('nan'),
+                       s.fountain, s.open_core, s.upward, s.has_fountain, s.spouts))
+
+
+# The pressure drop of a spouting bed against the weight per unit area of
+# the bed column above the probe, p_col = rho_p g phi_a (H_s - z_probe), the
+# pressure drop the column would carry fluidised.  The annulus is a packed,
+# unfluidised bed, so its gas pressure gradient stays below rho_p g phi_a
+# (else it lifts); the spout and the annulus meet below H_e and both end at
+# the outlet pressure above the bed, so the time-averaged probe pressure
+# cannot exceed p_col.  A spouting bed stays well above zero: the papers'
+# spouting beds give 1.40 kPa against a p_col of about 6.3 kPa (plates, 0.9 m,
+# 0.22) and 1.75 kPa against 2.7 kPa (no plates, 0.409 m, 0.64) at u_ms,
+# changing little above it; a tenth of p_col still catches a probe that
+# reads the freeboard or a gas that carries nothing.
+PRESSURE_BAND = (0.1, 1.0)
+
+
+def column_weight(verdict, rho_p, z_probe):
+    """p_col [Pa] from the window's mean bed surface and annulus solid
+    fraction; nan without snapshots."""
+    s = verdict.snapshots
+    if not s:
+        return float('nan')
+    surface = sum(x.surface for x in s) / len(s)
+    phi = sum(x.annulus_fraction for x in s) / len(s)
+    return rho_p * 9.81 * phi * max(surface - z_probe, 0.0)
+
+
+def region_from_text(text, g, what):
+    """A region given as 'HALF_WIDTH_MM,BOTTOM_MM' on a command line."""
+    try:
+        half, bottom = (float(v) for v in text.split(','))
+        return SpoutRegion(half / 1000, bottom / 1000)
+    except ValueError:
+        raise SystemExit('%s: --spout-region expected HALF_WIDTH_MM,BOTTOM_MM (two '
+                         'numbers, half width > 0), got %r' % (what, text))
+
+
+if __name__ == '__main__':
+    # stand-alone use: spoutregime.py [CASE]
+    import sys
+    import spoutedbed
+    case = sys.argv[1] if len(sys.argv) > 1 else '.'
+    print(classify_case(spoutedbed.load(case), case).describe())

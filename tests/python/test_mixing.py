@@ -1,0 +1,232 @@
+"""The degree of mixing (etc/python/mixing.py) against answers known
+without the code: a completely segregated bed, a hand-computed three-cell
+field, and the expectation of both forms for a randomly labelled bed.
+
+Random labelling (exactly N/2 particles A, every labelling equally likely):
+the number of A in a cell of n is hypergeometric, so
+E[(x_c - 1/2)^2] = (1/4)(N - n)/(n (N - 1)), and Lacey's index, linear in
+sigma_p^2, has the expectation N/(N - 1) for any cell sizes and either
+weighting.  The papers' form takes a square root: N sigma_p^2/sigma_0^2 is
+Pearson's X^2 of the 2 x K table (labels x cells), chi-square with K - 1
+degrees of freedom, mean (K - 1) N/(N - 1), so
+E[M_papers] = 1 - sqrt(2/(N - 1)) Gamma(K/2)/Gamma((K - 1)/2): 0.87695 for
+K = 6 cells of 50, where 1 - sqrt(E sigma_p^2)/sigma_0 would give 0.87068 and
+1 - 1/sqrt(n) 0.85858.  The averages over R labellings scatter by
+SD/sqrt(R) (SD 0.040 and 0.011 for the two forms at N = 300); the bounds are
+4 of those, below the 0.006 that separates the proper expectation from the
+square root of the mean."""
+import math
+import os
+import random
+import shutil
+import sys
+import tempfile
+import unittest
+
+sys.path.insert(0, os.path.join(os.path.dirname(__file__), '..', '..', 'etc', 'python'))
+import mixing  # noqa: E402
+import spoutlab_case as sc  # noqa: E402
+
+CELL = (0.055, 0.057)
+
+
+def lattice(columns, rows, spacing=0.011, x_first=None, z_first=0.0055):
+    """Particle centres (x, 0.02, z) on a columns x rows lattice symmetric
+    about x = 0, ids from 1."""
+    x_first = -(columns - 1) * spacing / 2 if x_first is None else x_first
+    points = [(x_first + i * spacing, 0.02, z_first + k * spacing)
+              for k in range(rows) for i in range(columns)]
+    return list(range(1, len(points) + 1)), points
+
+
+def chi_expectation(n_particles, n_cells):
+    """1 - sqrt(2/(N-1)) Gamma(K/2)/Gamma((K-1)/2), written out here with
+    math.gamma so the test does not lean on the module's own helper."""
+    k = n_cells
+    return 1 - math.sqrt(2.0 / (n_particles - 1)) * math.gamma(k / 2) / math.gamma((k - 1) / 2)
+
+
+class Segregated(unittest.TestCase):
+    """A bed labelled by either split, at t = 0: every cell holds one group."""
+
+    def setUp(self):
+        # 20 columns x 30 rows, 11 mm apart, across |x| < 0.11 m
+        self.ids, self.points = lattice(20, 30)
+
+    def test_halves_are_equal_and_on_either_side_of_the_median(self):
+        for split, axis in (('left-right', 0), ('lower-upper', 2)):
+            labels, line = mixing.segregated_labels(self.ids, self.points, split)
+            a = [p[axis] for i, p in zip(self.ids, self.points) if labels[i] == 1]
+            b = [p[axis] for i, p in zip(self.ids, self.points) if labels[i] == 0]
+            self.assertEqual(len(a), len(b))
+            self.assertLess(max(a), line)
+            self.assertGreater(min(b), line)
+        self.assertAlmostEqual(mixing.segregated_labels(self.ids, self.points,
+                                                        'left-right')[1], 0.0)
+
+    def test_a_segregated_bed_has_zero_mixing_in_both_forms(self):
+        for split in mixing.SPLITS:
+            labels, line = mixing.segregated_labels(self.ids, self.points, split)
+            for weighting in ('particles', 'cells'):
+                grid = mixing.SamplingGrid.for_split(CELL[0], CELL[1], split, line)
+                m = mixing.mixing_index(self.ids, self.points, labels, grid,
+                                        weighting=weighting)
+                self.assertGreater(m.cells, 4)
+                self.assertAlmostEqual(m.papers, 0.0, delta=1e-12, msg=split + weighting)
+                self.assertAlmostEqual(m.lacey, 0.0, delta=1e-12, msg=split + weighting)
+
+    def test_an_odd_number_splits_into_n_over_2_and_the_rest(self):
+        ids, points = self.ids[:-1], self.points[:-1]
+        labels, _ = mixing.segregated_labels(ids, points, 'lower-upper')
+        self.assertEqual(sum(labels.values()), len(ids) // 2)
+
+    def test_ties_are_broken_by_id(self):
+        ids, points = [5, 3, 9, 1], [(0.0, 0.0, 0.0)] * 4
+        labels, _ = mixing.segregated_labels(ids, points, 'left-right')
+        self.assertEqual(labels, {1: 1, 3: 1, 5: 0, 9: 0})
+
+
+class HandComputed(unittest.TestCase):
+    """Three cells (particles, A): (10, 10), (10, 0), (4, 2); xbar = 1/2."""
+    counts = {(0, 0): (10, 10), (1, 0): (10, 0), (2, 0): (4, 2)}
+
+    def test_count_weighted(self):
+        m = mixing.MixingIndex(self.counts, min_count=1)
+        # sigma^2 = (10/4 + 10/4 + 0)/24, sigma_r^2 = (1/4) 3/24
+        self.assertAlmostEqual(m.sigma_sq, 5 / 24)
+        self.assertAlmostEqual(m.papers, 1 - math.sqrt((5 / 24) / 0.25))
+        self.assertAlmostEqual(m.lacey, (0.25 - 5 / 24) / (0.25 - 0.25 * 3 / 24))
+
+    def test_cell_weighted_as_the_papers_write_it(self):
+        m = mixing.MixingIndex(self.counts, min_count=1, weighting='cells')
+        # sigma^2 = (1/4 + 1/4 + 0)/3, sigma_r^2 = (1/4)(1/10 + 1/10 + 1/4)/3
+        self.assertAlmostEqual(m.papers, 1 - math.sqrt((1 / 6) / 0.25))
+        self.assertAlmostEqual(m.lacey, (0.25 - 1 / 6) / (0.25 - 0.25 * 0.45 / 3))
+
+    def test_cells_below_the_minimum_are_left_out(self):
+        m = mixing.MixingIndex(self.counts, min_count=5)
+        self.assertEqual((m.cells, m.particles, m.skipped), (2, 20, 4))
+        self.assertAlmostEqual(m.papers, 0.0)
+        self.assertAlmostEqual(m.lacey, 0.0)
+
+    def test_one_label_only_is_undefined(self):
+        m = mixing.MixingIndex({(0, 0): (10, 10), (1, 0): (12, 12)})
+        self.assertTrue(math.isnan(m.papers) and math.isnan(m.lacey))
+
+
+class RandomLabelling(unittest.TestCase):
+    R = 2000
+
+    def averages(self, sizes, weighting):
+        rng = random.Random(20240607)
+        n_total = sum(sizes)
+        labels = [1] * (n_total // 2) + [0] * (n_total - n_total // 2)
+        papers = lacey = 0.0
+        for _ in range(self.R):
+            rng.shuffle(labels)
+            counts, start = {}, 0
+            for c, n in enumerate(sizes):
+                counts[(c, 0)] = (n, sum(labels[start:start + n]))
+                start += n
+            m = mixing.MixingIndex(counts, min_count=1, weighting=weighting)
+            papers += m.papers
+            lacey += m.lacey
+        return papers / self.R, lacey / self.R
+
+    def test_equal_cells(self):
+        papers, lacey = self.averages([50] * 6, 'particles')
+        self.assertAlmostEqual(papers, chi_expectation(300, 6), delta=4 * 0.040 / math.sqrt(self.R))
+        self.assertAlmostEqual(lacey, 300 / 299, delta=4 * 0.011 / math.sqrt(self.R))
+
+    def test_unequal_cells_either_weighting_gives_lacey_n_over_n_minus_1(self):
+        sizes = [30, 40, 50, 60, 70, 50]
+        for weighting in ('particles', 'cells'):
+            _, lacey = self.averages(sizes, weighting)
+            self.assertAlmostEqual(lacey, 300 / 299, delta=4 * 0.013 / math.sqrt(self.R),
+                                   msg=weighting)
+        papers, _ = self.averages(sizes, 'particles')
+        self.assertAlmostEqual(papers, chi_expectation(300, 6), delta=4 * 0.040 / math.sqrt(self.R))
+
+    def test_the_front_end_floor_is_the_chi_expectation(self):
+        self.assertAlmostEqual(mixing.random_papers_expectation(300, 6), chi_expectation(300, 6))
+
+
+def write_vtp(path, ids, points):
+    """A particle file in the layout spoutFoam writes (points, id, radius)."""
+    with open(path, 'w') as f:
+        f.write('<?xml version="1.0"?>\n<VTKFile type="PolyData" version="0.1">\n  <PolyData>\n'
+                '    <Piece NumberOfPoints="%d" NumberOfVerts="0">\n      <Points>\n'
+                '        <DataArray type="Float64" Name="position" NumberOfComponents="3" '
+                'format="ascii">\n' % len(ids))
+        f.write(''.join(' %.9g %.9g %.9g\n' % p for p in points))
+        f.write('        </DataArray>\n      </Points>\n      <PointData>\n'
+                '        <DataArray type="Int64" Name="id" format="ascii">\n')
+        f.write(''.join(' %d\n' % i for i in ids))
+        f.write('        </DataArray>\n        <DataArray type="Float64" Name="radius" '
+                'format="ascii">\n' + ' 0.004\n' * len(ids) + '        </DataArray>\n'
+                '      </PointData>\n    </Piece>\n  </PolyData>\n</VTKFile>\n')
+
+
+class FrontEnd(unittest.TestCase):
+    """A case with two particle files: the bed at t = 0, and at t = 1 s the
+    same places taken by the particles in a random order."""
+
+    def setUp(self):
+        self.case = tempfile.mkdtemp()
+        os.mkdir(os.path.join(self.case, 'particles'))
+        self.ids, self.points = lattice(20, 30)
+        write_vtp(os.path.join(self.case, 'particles', 'particles_0.vtp'), self.ids, self.points)
+        shuffled = list(self.ids)
+        random.Random(7).shuffle(shuffled)
+        self.shuffled = shuffled
+        write_vtp(os.path.join(self.case, 'particles', 'particles_1.vtp'), shuffled, self.points)
+
+    def tearDown(self):
+        shutil.rmtree(self.case)
+
+    def test_csv_labels_and_collection(self):
+        mixing.main([self.case, '--no-plot'])
+        with open(os.path.join(self.case, 'postProcessing', 'mixing.csv')) as f:
+            lines = f.read().splitlines()
+        self.assertEqual(lines[0].split(',')[:5], ['time [s]', 'M_papers left-right',
+                                                   'M_lacey left-right', 'M_papers lower-upper',
+                                                   'M_lacey lower-upper'])
+        t0, t1 = ([float(v) for v in line.split(',')] for line in lines[1:])
+        self.assertEqual(t0[1:5], [0.0, 0.0, 0.0, 0.0])
+        # one labelling of 600 particles in ~16 cells: within 4 SD of random
+        self.assertAlmostEqual(t1[2], 1.0, delta=4 * 0.011)
+        self.assertAlmostEqual(t1[1], 1 - 1 / math.sqrt(t1[6]), delta=4 * 0.040)
+        # the labelled copy of t = 1 carries each particle's t = 0 label
+        folder = os.path.join(self.case, mixing.LABELLED_DIR)
+        copy = os.path.join(folder, 'particles_1.vtp')
+        label = sc.read_vtp_array(copy, 'label_left-right')
+        ids = [int(v) for v in sc.read_vtp_array(copy, 'id')]
+        self.assertEqual(ids, self.shuffled)
+        x0 = {i: p[0] for i, p in zip(self.ids, self.points)}
+        self.assertEqual([int(v) for v in label], [1 if x0[i] < 0 else 0 for i in ids])
+        self.assertEqual(sc.read_vtp_points(copy), sc.read_vtp_points(
+            os.path.join(self.case, 'particles', 'particles_1.vtp')))
+        with open(os.path.join(folder, 'particles.pvd')) as f:
+            pvd = f.read()
+        self.assertIn('timestep="0" group="" part="0" file="particles_0.vtp"', pvd)
+        self.assertIn('timestep="1" group="" part="0" file="particles_1.vtp"', pvd)
+
+    def test_cell_size_scan(self):
+        mixing.main([self.case, '--no-plot', '--no-vtp', '--scan-cells', '--split', 'lower-upper'])
+        with open(os.path.join(self.case, 'postProcessing', 'mixingCellSize.csv')) as f:
+            rows = f.read().splitlines()[1:]
+        self.assertEqual(len(rows), 2 * len(mixing.SCAN_CELLS_MM))
+        at_zero = [r.split(',') for r in rows if r.startswith('0,')]
+        # the lattice is one particle deep: the gas-cell size holds fewer
+        # than min-count particles, so it keeps no cell; the others are 0
+        used = [r for r in at_zero if int(r[4]) > 0]
+        self.assertEqual(len(used), len(mixing.SCAN_CELLS_MM) - 1)
+        self.assertEqual([float(r[6]) for r in used], [0.0] * len(used))
+
+    def test_bad_cell_size_is_one_line(self):
+        with self.assertRaises(SystemExit):
+            mixing.main([self.case, '--cell', '0', '57'])
+
+
+if __name__ == '__main__':
+    unittest.main()
