@@ -6,6 +6,8 @@
 
 #include "Vec3.hpp"
 
+#include <vector>
+
 namespace spoutlab {
 
 using label = long;
@@ -25,6 +27,18 @@ class CellLocator {
   // models skip sampling for the common case of a particle well inside a cell;
   // a conservative "false" is always allowed.
   virtual bool sphereInsideCell(label cell, const Vec3& centre, double radius) const = 0;
+
+  // Parallel runs. The cells of neighbouring ranks that this rank's
+  // particles reach (halo cells) are numbered after its own, and nCells()
+  // counts both; findCell() and cellVolume() know them. complete() takes a
+  // per-cell sum over this rank's particles (width values per cell), adds
+  // each halo cell's share into its owner's entry and copies the owners'
+  // totals back, so every cell the rank sees holds the sum over all ranks'
+  // particles. A mesh without a halo (serial) has nothing to do.
+  virtual void complete(std::vector<double>& values, int width) const;
 };
+
+// complete() for a per-cell vector field
+void completeVectors(const CellLocator& mesh, std::vector<Vec3>& values);
 
 }  // namespace spoutlab

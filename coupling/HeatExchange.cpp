@@ -20,15 +20,17 @@ HeatCellCoefficients HeatExchange::cellCoefficients(const CellLocator& mesh,
       momentum.Us.size() != nCells || map.nParticles() != particles.size()) {
     throw std::invalid_argument("HeatExchange: field or particle map sizes do not match");
   }
-  // particle surface (A) and surface-weighted temperature (A T) per cell
-  std::vector<double> area(nCells, 0.0), areaT(nCells, 0.0);
+  // particle surface (A) and surface-weighted temperature (A T) per cell,
+  // with the neighbouring ranks' particles in this rank's halo (complete())
+  std::vector<double> sums(2 * nCells, 0.0);
   for (std::size_t n = 0; n < particles.size(); ++n) {
     const double a = particles[n].surface();
     for (const CellWeight& cw : map.cells(n)) {
-      area[cw.cell] += cw.weight * a;
-      areaT[cw.cell] += cw.weight * a * particles[n].temperature;
+      sums[2 * cw.cell] += cw.weight * a;
+      sums[2 * cw.cell + 1] += cw.weight * a * particles[n].temperature;
     }
   }
+  mesh.complete(sums, 2);
   HeatCellCoefficients out;
   out.h.assign(nCells, 0.0);
   out.reynolds.assign(nCells, 0.0);
@@ -36,7 +38,8 @@ HeatCellCoefficients HeatExchange::cellCoefficients(const CellLocator& mesh,
   out.K.assign(nCells, 0.0);
   out.S.assign(nCells, 0.0);
   for (std::size_t c = 0; c < nCells; ++c) {
-    if (area[c] <= 0.0) continue;
+    const double area = sums[2 * c], areaT = sums[2 * c + 1];
+    if (area <= 0.0) continue;
     const HeatTransferCell cell{f.centre[c], f.voidFraction[c], momentum.sauterDiameter[c],
                                 mag(momentum.Us[c] - f.U[c])};
     const double h = model_->h(cell, gas);
@@ -44,8 +47,8 @@ HeatCellCoefficients HeatExchange::cellCoefficients(const CellLocator& mesh,
     out.h[c] = h;
     out.reynolds[c] = heatTransferReynolds(cell, gas);
     out.region[c] = model_->region(cell);
-    out.K[c] = h * area[c] / volume;
-    out.S[c] = h * areaT[c] / volume;
+    out.K[c] = h * area / volume;
+    out.S[c] = h * areaT / volume;
   }
   return out;
 }

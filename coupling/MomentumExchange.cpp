@@ -41,28 +41,34 @@ ExchangeResult MomentumExchange::compute(const CellLocator& mesh,
 // same sums the particle forces use.
 void MomentumExchange::cellAverages(const CellLocator& mesh, const std::vector<Particle>& particles,
                                     const ParticleCellMap& map, ExchangeResult& out) const {
+  // per cell: solid volume, momentum (3) and surface of the particles in it;
+  // complete() adds the neighbouring ranks' particles in this rank's halo
   const std::size_t nCells = static_cast<std::size_t>(mesh.nCells());
-  std::vector<double> solid(nCells, 0.0), area(nCells, 0.0);
-  std::vector<Vec3> momentum(nCells);
+  std::vector<double> sums(5 * nCells, 0.0);
   const double pi = std::acos(-1.0);
   for (std::size_t n = 0; n < particles.size(); ++n) {
     const Particle& p = particles[n];
     const double volume = p.volume();
     const double surface = 4.0 * pi * p.radius * p.radius;
     for (const CellWeight& cw : map.cells(n)) {
-      solid[cw.cell] += cw.weight * volume;
-      momentum[cw.cell] += p.v * (cw.weight * volume);
-      area[cw.cell] += cw.weight * surface;
+      double* cell = &sums[5 * static_cast<std::size_t>(cw.cell)];
+      cell[0] += cw.weight * volume;
+      cell[1] += p.v.x * (cw.weight * volume);
+      cell[2] += p.v.y * (cw.weight * volume);
+      cell[3] += p.v.z * (cw.weight * volume);
+      cell[4] += cw.weight * surface;
     }
   }
+  mesh.complete(sums, 5);
   out.solidFraction.assign(nCells, 0.0);
   out.Us.assign(nCells, Vec3{});
   out.sauterDiameter.assign(nCells, 0.0);
   for (std::size_t c = 0; c < nCells; ++c) {
-    if (solid[c] <= 0.0) continue;
-    out.solidFraction[c] = solid[c] / mesh.cellVolume(static_cast<label>(c));
-    out.Us[c] = momentum[c] / solid[c];
-    out.sauterDiameter[c] = 6.0 * solid[c] / area[c];
+    const double* cell = &sums[5 * c];
+    if (cell[0] <= 0.0) continue;
+    out.solidFraction[c] = cell[0] / mesh.cellVolume(static_cast<label>(c));
+    out.Us[c] = Vec3{cell[1], cell[2], cell[3]} / cell[0];
+    out.sauterDiameter[c] = 6.0 * cell[0] / cell[4];
   }
 }
 

@@ -83,6 +83,7 @@ VoidFractionResult VoidFractionModel::compute(const CellLocator& mesh,
     for (const CellWeight& cw : row) result.solidVolume[cw.cell] += cw.weight * volume;
     result.map.appendRow(row);
   }
+  mesh.complete(result.solidVolume, 1);
   return result;
 }
 
