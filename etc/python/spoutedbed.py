@@ -392,10 +392,8 @@ def run_spoutfoam(end, ranks, who):
     import time
     if ranks > 1:
         if not os.path.isdir('processor0'):
-            subprocess.check_call(['bash', '-c', '''set -e
-foamDictionary -entry numberOfSubdomains -set %d system/decomposeParDict > /dev/null
-foamDictionary -entry coeffs.n -set "(%d 1 1)" system/decomposeParDict > /dev/null
-decomposePar > log.decomposePar 2>&1''' % (ranks, ranks)])
+            subprocess.check_call(['bash', '-c', '. "$SPOUTLAB_DIR/etc/caseFunctions" '
+                                   '&& decomposeSlabs %d' % ranks])
         cmd = ['mpirun', '-np', str(ranks), 'spoutFoam', '-parallel']
     else:
         cmd = ['spoutFoam']

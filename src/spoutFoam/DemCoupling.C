@@ -30,30 +30,50 @@ std::string format(double value)
 
 
 // Sums over the ranks of the coupled run (one rank when serial).
-void sumOverRanks(int* data, std::size_t n)
-{
-    MPI_Allreduce(MPI_IN_PLACE, data, int(n), MPI_INT, MPI_SUM, MPI_COMM_WORLD);
-}
-
 void sumOverRanks(double* data, std::size_t n)
 {
     MPI_Allreduce(MPI_IN_PLACE, data, int(n), MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
 }
 
 
-void sumOverRanks(std::vector<Vec3>& v)
+// Every rank's values, on every rank (for short lists: lost particle ids)
+std::vector<long> allRanks(const std::vector<long>& local)
 {
-    static_assert(sizeof(Vec3) == 3*sizeof(double), "Vec3 is three doubles");
-    sumOverRanks(reinterpret_cast<double*>(v.data()), 3*v.size());
+    int nProcs = 1;
+    MPI_Comm_size(MPI_COMM_WORLD, &nProcs);
+    std::vector<int> counts(nProcs), offsets(nProcs, 0);
+    const int mine = int(local.size());
+    MPI_Allgather(&mine, 1, MPI_INT, counts.data(), 1, MPI_INT, MPI_COMM_WORLD);
+    for (int p = 1; p < nProcs; ++p) offsets[p] = offsets[p-1] + counts[p-1];
+    std::vector<long> all(std::size_t(offsets.back() + counts.back()));
+    MPI_Allgatherv
+    (
+        local.data(), mine, MPI_LONG, all.data(), counts.data(), offsets.data(),
+        MPI_LONG, MPI_COMM_WORLD
+    );
+    return all;
 }
 
 
-std::vector<Vec3> toVec3(const Foam::vectorField& field)
+// Every rank's rows on the master (elsewhere: empty), for output
+std::vector<double> onMaster(const std::vector<double>& local)
 {
-    std::vector<Vec3> out(field.size());
-    forAll(field, i) out[i] = Vec3{field[i].x(), field[i].y(), field[i].z()};
-    return out;
+    int nProcs = 1, rank = 0;
+    MPI_Comm_size(MPI_COMM_WORLD, &nProcs);
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    std::vector<int> counts(nProcs), offsets(nProcs, 0);
+    const int mine = int(local.size());
+    MPI_Gather(&mine, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
+    for (int p = 1; p < nProcs; ++p) offsets[p] = offsets[p-1] + counts[p-1];
+    std::vector<double> all(rank == 0 ? std::size_t(offsets.back() + counts.back()) : 0);
+    MPI_Gatherv
+    (
+        local.data(), mine, MPI_DOUBLE, all.data(), counts.data(), offsets.data(),
+        MPI_DOUBLE, 0, MPI_COMM_WORLD
+    );
+    return all;
 }
+
 
 bool finite(double x) { return std::isfinite(x); }
 bool finite(const Foam::vector& v)
@@ -229,6 +249,16 @@ DemCoupling::DemCoupling
         transferHeat();
         writeParticles();
     }
+    if (mesh.time().value() == 0)
+    {
+        // what the run starts from, beside the initial conditions: the
+        // exchange of the settled bed (e.g. to compare decompositions)
+        voidfraction_.write();
+        Ksl_.write();
+        Us_.write();
+        solidFraction_.write();
+        dem_->writeStepState(mesh.time().globalPath()/"DEM"/"start.state");
+    }
 }
 
 
@@ -293,6 +323,28 @@ void DemCoupling::startDem()
     (
         new LiggghtsDem(input, vars, caseDir/"log.liggghts", MPI_COMM_WORLD)
     );
+    if (Foam::Pstream::parRun())
+    {
+        // each rank's atoms in its own cells; what they reach of the
+        // neighbours' cells becomes its halo
+        const std::vector<double> cuts = meshSlabs();
+        const double reach = dem_->reach();
+        for (std::size_t r = 0; r + 1 < cuts.size(); ++r)
+        {
+            if (cuts[r + 1] - cuts[r] < reach)
+            {
+                throw InputError
+                (
+                    "system/decomposeParDict: the x-slab of rank " + std::to_string(r)
+                  + " is " + format(cuts[r + 1] - cuts[r]) + " m wide, less than "
+                    "the particles' reach (largest radius + LIGGGHTS skin, "
+                  + format(reach) + " m); run on fewer ranks"
+                );
+            }
+        }
+        dem_->setSlabs(cuts);
+        locator_.addHalo(cuts, reach);
+    }
     if (runTime.value() > 0)
     {
         const Foam::fileName state =
@@ -312,6 +364,37 @@ void DemCoupling::startDem()
     }
     Foam::Info<< "LIGGGHTS: " << dem_->nParticles() << " particles from "
         << input << ", DEM time step " << dem_->timeStep() << " s" << Foam::endl;
+}
+
+
+std::vector<double> DemCoupling::meshSlabs() const
+{
+    // each rank's x-extent, in rank order: the slabs must follow each other
+    const Foam::label nProcs = Foam::Pstream::nProcs();
+    std::vector<double> lo(nProcs, 0), hi(nProcs, 0);
+    const Foam::boundBox local(mesh_.points(), false);   // not reduced
+    lo[Foam::Pstream::myProcNo()] = local.min().x();
+    hi[Foam::Pstream::myProcNo()] = local.max().x();
+    sumOverRanks(lo.data(), lo.size());
+    sumOverRanks(hi.data(), hi.size());
+    const double tol = 1e-9*(hi.back() - lo.front());
+    for (Foam::label r = 1; r < nProcs; ++r)
+    {
+        if (std::abs(lo[r] - hi[r-1]) > tol)
+        {
+            throw InputError
+            (
+                "system/decomposeParDict: the coupling expects the mesh in "
+                "x-slabs in rank order (etc/caseFunctions decomposeSlabs); "
+                "rank " + std::to_string(r - 1) + " spans x " + format(lo[r-1])
+              + " to " + format(hi[r-1]) + " m, rank " + std::to_string(r)
+              + " " + format(lo[r]) + " to " + format(hi[r]) + " m"
+            );
+        }
+    }
+    std::vector<double> cuts(lo);
+    cuts.push_back(hi.back());
+    return cuts;
 }
 
 
@@ -335,7 +418,10 @@ void DemCoupling::startHeat
             "thermalCapacity peratomtype ...'"
         );
     }
-    heat_.reset(new HeatCoupling(mesh_, dict_, model, voidfraction_, phi, rho, mu));
+    heat_.reset
+    (
+        new HeatCoupling(mesh_, locator_, dict_, model, voidfraction_, phi, rho, mu)
+    );
     // the particles' m c_p/A do not change during a run (deleting particles
     // can only raise the smallest), so it is taken once
     minHeatCapacityPerArea_ = dem_->minHeatCapacityPerArea();
@@ -382,46 +468,34 @@ void DemCoupling::checkTimeSteps() const
 
 VoidFractionResult DemCoupling::mapParticles()
 {
-    dem_->gather(particles_);
-    // every rank holds all particles, so every rank finds the same one
+    dem_->localParticles(particles_);
+    std::string found;
     for (const Particle& p : particles_)
     {
-        if (!finite(p.x) || !finite(p.v))
-        {
-            stopIfAnyRank
-            (
-                "non-finite position or velocity of particle "
-              + std::to_string(p.id) + " (x " + format(p.x) + ", v "
-              + format(p.v) + ")"
-            );
-        }
+        if (finite(p.x) && finite(p.v)) continue;
+        found = "non-finite position or velocity of particle " + std::to_string(p.id)
+              + " (x " + format(p.x) + ", v " + format(p.v) + ")";
+        break;
     }
+    stopIfAnyRank(found);
     VoidFractionResult vf =
         voidFractionModel_->compute(locator_, particles_, centreCells_);
 
-    // A particle is lost only if no processor found its centre.
-    std::vector<int> found(particles_.size());
-    for (std::size_t i = 0; i < particles_.size(); ++i)
-    {
-        found[i] = vf.centreCell[i] >= 0 ? 1 : 0;
-    }
-    sumOverRanks(found.data(), found.size());
-
-    std::vector<long> lostIds;
-    for (std::size_t i = 0; i < particles_.size(); ++i)
-    {
-        if (!found[i]) lostIds.push_back(particles_[i].id);
-    }
-    if (!lostIds.empty())
+    // A rank's atoms lie in its cells or its halo; a centre in neither is
+    // outside the mesh.
+    std::vector<long> lost;
+    for (const std::size_t i : vf.lostParticles) lost.push_back(particles_[i].id);
+    lost = allRanks(lost);
+    if (!lost.empty())
     {
         std::string ids;
-        for (std::size_t k = 0; k < lostIds.size() && k < 20; ++k)
+        for (std::size_t k = 0; k < lost.size() && k < 20; ++k)
         {
-            ids += (k ? ", " : "") + std::to_string(lostIds[k]);
+            ids += (k ? ", " : "") + std::to_string(lost[k]);
         }
-        if (lostIds.size() > 20) ids += ", ...";
+        if (lost.size() > 20) ids += ", ...";
         const std::string what =
-            std::to_string(lostIds.size()) + " particle(s) outside the CFD mesh at t = "
+            std::to_string(lost.size()) + " particle(s) outside the CFD mesh at t = "
           + mesh_.time().timeName() + " s (ids " + ids + ")";
         if (!deleteLost_)
         {
@@ -432,16 +506,15 @@ VoidFractionResult DemCoupling::mapParticles()
             );
         }
         Foam::Info<< "spoutFoam: deleting " << what.c_str() << Foam::endl;
-        dem_->deleteParticles(lostIds);
-        dem_->gather(particles_);
+        dem_->deleteParticles(lost);
+        dem_->localParticles(particles_);
         vf = voidFractionModel_->compute(locator_, particles_);
     }
 
     centreCells_ = vf.centreCell;   // hints for the next step
-    const std::vector<double> eps =
-        voidFractionModel_->voidFraction(locator_, vf.solidVolume);
+    eps_ = voidFractionModel_->voidFraction(locator_, vf.solidVolume);
     Foam::scalarField& field = voidfraction_.primitiveFieldRef();
-    forAll(field, celli) field[celli] = eps[celli];
+    forAll(field, celli) field[celli] = eps_[celli];
     voidfraction_.correctBoundaryConditions();
     checkField(voidfraction_);
     return vf;
@@ -450,16 +523,13 @@ VoidFractionResult DemCoupling::mapParticles()
 
 void DemCoupling::exchange(const VoidFractionResult& vf)
 {
-    const std::vector<Vec3> U = toVec3(U_.primitiveField());
-    const Foam::volVectorField gradP(Foam::fvc::grad(p_));
-    const std::vector<Vec3> gradPv = toVec3(gradP.primitiveField());
-    const std::vector<double> eps
-    (
-        voidfraction_.primitiveField().begin(), voidfraction_.primitiveField().end()
-    );
+    // the gas in this rank's cells and its halo
+    const std::vector<Vec3> U = locator_.withHalo(U_.primitiveField());
+    const std::vector<Vec3> gradP =
+        locator_.withHalo(Foam::fvc::grad(p_)().primitiveField());
     const ExchangeResult ex = exchange_->compute
     (
-        locator_, particles_, vf, GasCellFields{U, gradPv, eps}, gas_, g_
+        locator_, particles_, vf, GasCellFields{U, gradP, eps_}, gas_, g_
     );
     // before the forces reach LIGGGHTS or the log
     checkParticles("fluid force", ex.totalForce);
@@ -483,7 +553,7 @@ void DemCoupling::exchange(const VoidFractionResult& vf)
     dem_->setFluidForces(fluidForce_);
     if (heat_)
     {
-        heat_->updateCoefficients(locator_, particles_, vf.map, ex);
+        heat_->updateCoefficients(particles_, eps_, vf.map, ex);
         heat_->checkTimeStep(minHeatCapacityPerArea_);
     }
     logStep(vf, ex);
@@ -492,8 +562,8 @@ void DemCoupling::exchange(const VoidFractionResult& vf)
 
 void DemCoupling::logStep(const VoidFractionResult& vf, const ExchangeResult& ex)
 {
-    double solid = 0;
-    for (double s : vf.solidVolume) solid += s;
+    double solid = 0;   // own cells: the halo's are the neighbours'
+    for (label c = 0; c < locator_.nOwnedCells(); ++c) solid += vf.solidVolume[c];
     Vec3 drag, gas;
     for (const Vec3& f : ex.dragForce) drag += f;
     forAll(Ksl_, celli)
@@ -501,18 +571,20 @@ void DemCoupling::logStep(const VoidFractionResult& vf, const ExchangeResult& ex
         const Vec3& u = Vec3{U_[celli].x(), U_[celli].y(), U_[celli].z()};
         gas += ex.beta[celli]*mesh_.V()[celli]*(u - ex.Us[celli]);
     }
-    double sums[7] = {solid, drag.x, drag.y, drag.z, gas.x, gas.y, gas.z};
+    double sums[8] =
+        {solid, drag.x, drag.y, drag.z, gas.x, gas.y, gas.z, double(particles_.size())};
     const double mass = dem_->totalMass();
-    sumOverRanks(sums, 7);
+    sumOverRanks(sums, 8);
+    const long nParticles = std::lround(sums[7]);
     const double epsMin = Foam::gMin(voidfraction_.primitiveField());
 
-    Foam::Info<< "Coupling: " << label(particles_.size()) << " particles, "
+    Foam::Info<< "Coupling: " << nParticles << " particles, "
         << "min voidfraction " << epsMin
         << ", drag on particles (" << sums[1] << ' ' << sums[2] << ' '
         << sums[3] << ") N" << Foam::endl;
     std::ostringstream row;
     row << std::setprecision(10) << mesh_.time().value() << ','
-        << particles_.size() << ',' << mass << ',' << sums[0] << ',' << epsMin;
+        << nParticles << ',' << mass << ',' << sums[0] << ',' << epsMin;
     for (int k = 1; k < 7; ++k) row << ',' << sums[k];
     logRow_ = row.str();
     if (!heat_) endLogRow();   // with heat, the row ends after the gas energy
@@ -697,33 +769,61 @@ void DemCoupling::write()
 
 void DemCoupling::writeParticles()
 {
-    // forces are held per rank (each rank's share); the file gets the sums
-    std::vector<Vec3> fluid = fluidForce_, drag = dragForce_;
-    std::vector<double> heatFlux = heatFlux_, h;
+    // one row per particle, gathered on the master: id, x (3), v (3),
+    // radius, T, fluid force (3), drag (3)[, heat flux, h]
+    const int width = heat_ ? 17 : 15;
+    std::vector<double> h;
     if (heat_) h = heat_->particleH(vf_.map);
-    if (Foam::Pstream::parRun())
+    std::vector<double> rows;
+    rows.reserve(particles_.size()*width);
+    for (std::size_t i = 0; i < particles_.size(); ++i)
     {
-        sumOverRanks(fluid);
-        sumOverRanks(drag);
-        sumOverRanks(heatFlux.data(), heatFlux.size());
-        sumOverRanks(h.data(), h.size());
+        const Particle& p = particles_[i];
+        rows.insert
+        (
+            rows.end(),
+            {
+                double(p.id), p.x.x, p.x.y, p.x.z, p.v.x, p.v.y, p.v.z, p.radius,
+                p.temperature, fluidForce_[i].x, fluidForce_[i].y, fluidForce_[i].z,
+                dragForce_[i].x, dragForce_[i].y, dragForce_[i].z
+            }
+        );
+        if (heat_) rows.insert(rows.end(), {heatFlux_[i], h[i]});
+    }
+    rows = onMaster(rows);
+    if (!Foam::Pstream::master()) return;
+
+    const std::size_t n = rows.size()/width;
+    std::vector<std::size_t> order(n);
+    for (std::size_t k = 0; k < n; ++k) order[k] = k;
+    std::sort
+    (
+        order.begin(), order.end(),
+        [&](std::size_t a, std::size_t b) { return rows[a*width] < rows[b*width]; }
+    );
+    std::vector<Particle> all(n);
+    std::vector<Vec3> fluid(n), drag(n);
+    std::vector<double> T(n), q(n), hp(n);
+    for (std::size_t k = 0; k < n; ++k)
+    {
+        const double* r = &rows[order[k]*width];
+        all[k].id = long(r[0]);
+        all[k].x = Vec3{r[1], r[2], r[3]};
+        all[k].v = Vec3{r[4], r[5], r[6]};
+        all[k].radius = r[7];
+        T[k] = all[k].temperature = r[8];
+        fluid[k] = Vec3{r[9], r[10], r[11]};
+        drag[k] = Vec3{r[12], r[13], r[14]};
+        if (heat_) { q[k] = r[15]; hp[k] = r[16]; }
     }
     std::vector<std::pair<std::string, std::vector<double>>> scalars;
-    if (heat_)
-    {
-        std::vector<double> T(particles_.size());
-        for (std::size_t i = 0; i < T.size(); ++i) T[i] = particles_[i].temperature;
-        scalars = {{"temperature", T}, {"heatFlux", heatFlux}, {"h", h}};
-    }
-    if (Foam::Pstream::master())
-    {
-        const Foam::Time& runTime = mesh_.time();
-        vtk_.write
-        (
-            runTime.value(), runTime.timeName(), particles_,
-            {{"fluidForce", fluid}, {"dragForce", drag}}, scalars
-        );
-    }
+    if (heat_) scalars = {{"temperature", T}, {"heatFlux", q}, {"h", hp}};
+    const Foam::Time& runTime = mesh_.time();
+    vtk_.write
+    (
+        runTime.value(), runTime.timeName(), all,
+        {{"fluidForce", fluid}, {"dragForce", drag}}, scalars
+    );
 }
 
 

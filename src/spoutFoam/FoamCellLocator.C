@@ -40,7 +40,7 @@ FoamCellLocator::FoamCellLocator(const Foam::fvMesh& mesh)
             planes_[k++] = Plane{n.x(), n.y(), n.z(), n & mesh.faceCentres()[f]};
         }
     }
-    const Foam::boundBox& bb = mesh.bounds();
+    const Foam::boundBox bb(mesh.points(), false);   // this rank's cells
     const double tol = 1e-9*bb.mag();
     bbMin_ = Vec3{bb.min().x() - tol, bb.min().y() - tol, bb.min().z() - tol};
     bbMax_ = Vec3{bb.max().x() + tol, bb.max().y() + tol, bb.max().z() + tol};
@@ -60,13 +60,13 @@ FoamCellLocator::FoamCellLocator(const Foam::fvMesh& mesh)
 
 label FoamCellLocator::nCells() const
 {
-    return mesh_.nCells();
+    return mesh_.nCells() + label(haloVolume_.size());
 }
 
 
 double FoamCellLocator::cellVolume(label cell) const
 {
-    return mesh_.V()[cell];
+    return cell < mesh_.nCells() ? mesh_.V()[cell] : haloVolume_[cell - mesh_.nCells()];
 }
 
 
@@ -115,6 +115,44 @@ label FoamCellLocator::towards(const Vec3& p, label cell) const
 
 label FoamCellLocator::findCell(const Vec3& p, label hint) const
 {
+    if (hint >= mesh_.nCells())
+    {
+        // an atom that strayed into a neighbour's cell, or its sample points
+        if (inside(p, hint)) return hint;
+        hint = -1;
+    }
+    const label cell = findOwned(p, hint);
+    return cell >= 0 || haloVolume_.empty() ? cell : findHalo(p);
+}
+
+
+label FoamCellLocator::findHalo(const Vec3& p) const
+{
+    if
+    (
+        p.x < haloBbMin_.x || p.y < haloBbMin_.y || p.z < haloBbMin_.z
+     || p.x > haloBbMax_.x || p.y > haloBbMax_.y || p.z > haloBbMax_.z
+    )
+    {
+        return -1;
+    }
+    for (std::size_t k = 0; k < haloVolume_.size(); ++k)
+    {
+        const Vec3& lo = haloMin_[k];
+        const Vec3& hi = haloMax_[k];
+        if (p.x < lo.x || p.y < lo.y || p.z < lo.z || p.x > hi.x || p.y > hi.y || p.z > hi.z)
+        {
+            continue;
+        }
+        const label cell = mesh_.nCells() + label(k);
+        if (inside(p, cell)) return cell;
+    }
+    return -1;
+}
+
+
+label FoamCellLocator::findOwned(const Vec3& p, label hint) const
+{
     // sample points of particles cut by a wall often lie outside the whole
     // mesh: no search needed
     if
@@ -162,6 +200,218 @@ bool FoamCellLocator::sphereInsideCell
 ) const
 {
     return depthInside(centre, cell) >= radius;
+}
+
+// --- the halo ------------------------------------------------------------------
+
+namespace
+{
+
+// each cell's bounds, from its faces' points
+void cellBounds(const Foam::fvMesh& mesh, Foam::label c, Vec3& lo, Vec3& hi)
+{
+    lo = Vec3{1e300, 1e300, 1e300};
+    hi = Vec3{-1e300, -1e300, -1e300};
+    for (const Foam::label f : mesh.cells()[c])
+    {
+        for (const Foam::label pt : mesh.faces()[f])
+        {
+            const Foam::point& x = mesh.points()[pt];
+            lo = Vec3{std::min(lo.x, x.x()), std::min(lo.y, x.y()), std::min(lo.z, x.z())};
+            hi = Vec3{std::max(hi.x, x.x()), std::max(hi.y, x.y()), std::max(hi.z, x.z())};
+        }
+    }
+}
+
+// Send and receive one message with each neighbour (-1: none).
+void swap
+(
+    const int rank[2], const std::vector<double> out[2], std::vector<double> in[2]
+)
+{
+    MPI_Request requests[4];
+    int n = 0;
+    for (int s = 0; s < 2; ++s)
+    {
+        if (rank[s] < 0) continue;
+        MPI_Irecv
+        (
+            in[s].data(), int(in[s].size()), MPI_DOUBLE, rank[s], 7101,
+            MPI_COMM_WORLD, &requests[n++]
+        );
+        MPI_Isend
+        (
+            const_cast<double*>(out[s].data()), int(out[s].size()), MPI_DOUBLE,
+            rank[s], 7101, MPI_COMM_WORLD, &requests[n++]
+        );
+    }
+    MPI_Waitall(n, requests, MPI_STATUSES_IGNORE);
+}
+
+} // namespace
+
+
+void FoamCellLocator::addHalo(const std::vector<double>& cuts, double reach)
+{
+    int rank = 0, nProcs = 1;
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    MPI_Comm_size(MPI_COMM_WORLD, &nProcs);
+    sides_[0].rank = rank > 0 ? rank - 1 : -1;
+    sides_[1].rank = rank < nProcs - 1 ? rank + 1 : -1;
+
+    // own cells within reach of the planes shared with each neighbour
+    for (Foam::label c = 0; c < mesh_.nCells(); ++c)
+    {
+        Vec3 lo, hi;
+        cellBounds(mesh_, c, lo, hi);
+        if (sides_[0].rank >= 0 && lo.x <= cuts[rank] + reach) sides_[0].sent.push_back(c);
+        if (sides_[1].rank >= 0 && hi.x >= cuts[rank + 1] - reach) sides_[1].sent.push_back(c);
+    }
+
+    // their geometry: volume, bounds (6), number of faces, face planes (4 each)
+    std::vector<double> out[2], in[2];
+    for (int s = 0; s < 2; ++s)
+    {
+        for (const label c : sides_[s].sent)
+        {
+            Vec3 lo, hi;
+            cellBounds(mesh_, c, lo, hi);
+            out[s].insert(out[s].end(), {mesh_.V()[c], lo.x, lo.y, lo.z, hi.x, hi.y, hi.z});
+            out[s].push_back(double(planeStart_[c + 1] - planeStart_[c]));
+            for (std::size_t k = planeStart_[c]; k < planeStart_[c + 1]; ++k)
+            {
+                const Plane& f = planes_[k];
+                out[s].insert(out[s].end(), {f.nx, f.ny, f.nz, f.d});
+            }
+        }
+    }
+    std::vector<double> sizesOut[2], sizesIn[2];
+    const int ranks[2] = {sides_[0].rank, sides_[1].rank};
+    for (int s = 0; s < 2; ++s)
+    {
+        sizesOut[s] = {double(out[s].size()), double(sides_[s].sent.size())};
+        sizesIn[s].assign(2, 0.0);
+    }
+    swap(ranks, sizesOut, sizesIn);
+    for (int s = 0; s < 2; ++s) in[s].resize(std::size_t(sizesIn[s][0]));
+    swap(ranks, out, in);
+
+    // append the received cells after our own, side by side
+    haloBbMin_ = Vec3{1e300, 1e300, 1e300};
+    haloBbMax_ = Vec3{-1e300, -1e300, -1e300};
+    for (int s = 0; s < 2; ++s)
+    {
+        sides_[s].haloStart = haloVolume_.size();
+        sides_[s].haloSize = std::size_t(sizesIn[s][1]);
+        std::size_t k = 0;
+        for (std::size_t i = 0; i < sides_[s].haloSize; ++i)
+        {
+            const double* cell = &in[s][k];
+            haloVolume_.push_back(cell[0]);
+            const double tol = 1e-9*std::cbrt(cell[0]);
+            haloMin_.push_back(Vec3{cell[1] - tol, cell[2] - tol, cell[3] - tol});
+            haloMax_.push_back(Vec3{cell[4] + tol, cell[5] + tol, cell[6] + tol});
+            const Vec3& lo = haloMin_.back();
+            const Vec3& hi = haloMax_.back();
+            haloBbMin_ = Vec3{std::min(haloBbMin_.x, lo.x), std::min(haloBbMin_.y, lo.y), std::min(haloBbMin_.z, lo.z)};
+            haloBbMax_ = Vec3{std::max(haloBbMax_.x, hi.x), std::max(haloBbMax_.y, hi.y), std::max(haloBbMax_.z, hi.z)};
+            const std::size_t nFaces = std::size_t(cell[7]);
+            for (std::size_t f = 0; f < nFaces; ++f)
+            {
+                const double* pl = &cell[8 + 4*f];
+                planes_.push_back(Plane{pl[0], pl[1], pl[2], pl[3]});
+                faceCell_.push_back(-1);   // no walks through the halo
+            }
+            planeStart_.push_back(planes_.size());
+            cellCells_.push_back(cellCells_.back());
+            k += 8 + 4*nFaces;
+        }
+    }
+}
+
+
+void FoamCellLocator::exchange
+(
+    std::vector<double>& values, int width, bool reverse
+) const
+{
+    const std::size_t w = std::size_t(width), nOwned = std::size_t(mesh_.nCells());
+    std::vector<double> out[2], in[2];
+    const int ranks[2] = {sides_[0].rank, sides_[1].rank};
+    for (int s = 0; s < 2; ++s)
+    {
+        const Side& side = sides_[s];
+        if (reverse)
+        {
+            // our halo cells' shares go to their owner
+            const double* halo = &values[(nOwned + side.haloStart)*w];
+            out[s].assign(halo, halo + side.haloSize*w);
+            in[s].resize(side.sent.size()*w);
+        }
+        else
+        {
+            for (const label c : side.sent)
+            {
+                out[s].insert(out[s].end(), &values[c*w], &values[c*w] + w);
+            }
+            in[s].resize(side.haloSize*w);
+        }
+    }
+    swap(ranks, out, in);
+    for (int s = 0; s < 2; ++s)
+    {
+        const Side& side = sides_[s];
+        if (reverse)
+        {
+            for (std::size_t i = 0; i < side.sent.size(); ++i)
+            {
+                for (std::size_t d = 0; d < w; ++d)
+                {
+                    values[side.sent[i]*w + d] += in[s][i*w + d];
+                }
+            }
+        }
+        else
+        {
+            std::copy(in[s].begin(), in[s].end(), &values[(nOwned + side.haloStart)*w]);
+        }
+    }
+}
+
+
+void FoamCellLocator::complete(std::vector<double>& values, int width) const
+{
+    if (sides_[0].rank < 0 && sides_[1].rank < 0) return;
+    exchange(values, width, true);
+    exchange(values, width, false);
+}
+
+
+std::vector<double> FoamCellLocator::withHalo(const Foam::scalarField& field) const
+{
+    std::vector<double> values(static_cast<std::size_t>(nCells()), 0.0);
+    std::copy(field.begin(), field.end(), values.begin());
+    if (sides_[0].rank >= 0 || sides_[1].rank >= 0) exchange(values, 1, false);
+    return values;
+}
+
+
+std::vector<Vec3> FoamCellLocator::withHalo(const Foam::vectorField& field) const
+{
+    std::vector<double> flat(3*static_cast<std::size_t>(nCells()), 0.0);
+    forAll(field, i)
+    {
+        flat[3*i] = field[i].x();
+        flat[3*i + 1] = field[i].y();
+        flat[3*i + 2] = field[i].z();
+    }
+    if (sides_[0].rank >= 0 || sides_[1].rank >= 0) exchange(flat, 3, false);
+    std::vector<Vec3> values(flat.size()/3);
+    for (std::size_t i = 0; i < values.size(); ++i)
+    {
+        values[i] = Vec3{flat[3*i], flat[3*i + 1], flat[3*i + 2]};
+    }
+    return values;
 }
 
 } // namespace spoutlab

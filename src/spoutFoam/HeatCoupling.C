@@ -97,6 +97,7 @@ const Foam::dimensionSet dimHeatPerVolumeKelvin(1, -1, -3, -1, 0);     // W/m3/K
 HeatCoupling::HeatCoupling
 (
     const Foam::fvMesh& mesh,
+    const FoamCellLocator& cells,
     const Foam::dictionary& couplingDict,
     const Foam::word& modelName,
     const Foam::volScalarField& voidfraction,
@@ -106,6 +107,7 @@ HeatCoupling::HeatCoupling
 )
 :
     mesh_(mesh),
+    locator_(cells),
     voidfraction_(voidfraction),
     phi_(phi),
     gas_(readGas(mesh, rho, mu)),
@@ -137,9 +139,7 @@ HeatCoupling::HeatCoupling
     S_(scratchField(mesh, "Sheat"), mesh, Foam::dimensionedScalar(dimHeatPerVolume, Foam::Zero))
 {
     checkCase();
-    const Foam::volVectorField& C = mesh.C();
-    centres_.resize(C.size());
-    forAll(C, i) centres_[i] = Vec3{C[i].x(), C[i].y(), C[i].z()};
+    centres_ = locator_.withHalo(mesh.C().primitiveField());
 }
 
 
@@ -183,8 +183,8 @@ void HeatCoupling::checkCase() const
 
 void HeatCoupling::updateCoefficients
 (
-    const CellLocator& mesh,
     const std::vector<Particle>& particles,
+    const std::vector<double>& eps,
     const ParticleCellMap& map,
     const ExchangeResult& momentum
 )
@@ -199,15 +199,10 @@ void HeatCoupling::updateCoefficients
     (
         Foam::fvc::reconstruct(phi_)/Foam::max(voidfraction_, Foam::SMALL)
     );
-    std::vector<Vec3> u(U.size());
-    forAll(U, i) u[i] = Vec3{U[i].x(), U[i].y(), U[i].z()};
-    const std::vector<double> eps
-    (
-        voidfraction_.primitiveField().begin(), voidfraction_.primitiveField().end()
-    );
     cells_ = exchange_.cellCoefficients
     (
-        mesh, particles, map, momentum, GasHeatCellFields{centres_, u, eps}, gas_
+        locator_, particles, map, momentum,
+        GasHeatCellFields{centres_, locator_.withHalo(U.primitiveField()), eps}, gas_
     );
     forAll(K_, i)
     {
@@ -262,8 +257,10 @@ std::vector<double> HeatCoupling::particleHeatFlux
     const ParticleCellMap& map
 ) const
 {
-    const std::vector<double> T(T_.primitiveField().begin(), T_.primitiveField().end());
-    return exchange_.particleHeatFlux(particles, map, cells_, T);
+    return exchange_.particleHeatFlux
+    (
+        particles, map, cells_, locator_.withHalo(T_.primitiveField())
+    );
 }
 
 

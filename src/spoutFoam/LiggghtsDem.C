@@ -7,11 +7,14 @@
 #include "LiggghtsInputCheck.H"
 
 #include "atom.h"
+#include "comm.h"
+#include "domain.h"
 #include "fix_property_atom.h"
 #include "fix_property_global.h"
 #include "input.h"
 #include "lammps.h"
 #include "modify.h"
+#include "neighbor.h"
 #include "update.h"
 
 #include <algorithm>
@@ -261,89 +264,50 @@ long LiggghtsDem::step() const
 }
 
 
-void LiggghtsDem::gather(std::vector<Particle>& particles)
+void LiggghtsDem::localParticles(std::vector<Particle>& particles)
 {
     const auto* atom = lmp_->atom;
-    const int nLocal = atom->nlocal;
-    const int width = hasHeat() ? 9 : 8;   // id, x(3), v(3), radius[, T]
     const double* T = hasHeat() ? temperature_->vector_atom : nullptr;
 
-    std::vector<double> local(std::size_t(nLocal)*width);
-    for (int i = 0; i < nLocal; ++i)
-    {
-        double* row = &local[std::size_t(i)*width];
-        row[0] = atom->tag[i];
-        for (int d = 0; d < 3; ++d)
-        {
-            row[1 + d] = atom->x[i][d];
-            row[4 + d] = atom->v[i][d];
-        }
-        row[7] = atom->radius[i];
-        if (T) row[8] = T[i];
-    }
-
-    int nProcs = 1;
-    MPI_Comm_size(comm_, &nProcs);
-    std::vector<int> counts(nProcs), offsets(nProcs, 0);
-    int myCount = int(local.size());
-    MPI_Allgather(&myCount, 1, MPI_INT, counts.data(), 1, MPI_INT, comm_);
-    for (int p = 1; p < nProcs; ++p) offsets[p] = offsets[p-1] + counts[p-1];
-    std::vector<double> all(std::size_t(offsets.back() + counts.back()));
-    MPI_Allgatherv
-    (
-        local.data(), myCount, MPI_DOUBLE,
-        all.data(), counts.data(), offsets.data(), MPI_DOUBLE, comm_
-    );
-
     // In id order, so each particle keeps its place (and its cell hint)
-    // from step to step whatever order LIGGGHTS keeps its atoms in.  Ids
-    // run from 1 to the number ever inserted, so placing each row by its id
-    // is linear where sorting was not.
-    const std::size_t n = all.size()/width;
-    long maxId = 0;
-    for (std::size_t i = 0; i < n; ++i) maxId = std::max(maxId, long(all[i*width]));
-    std::vector<long> row(std::size_t(maxId) + 1, -1);
-    for (std::size_t i = 0; i < n; ++i) row[std::size_t(all[i*width])] = long(i);
-    particles.resize(n);
-    std::size_t k = 0;
-    for (const long i : row)
-    {
-        if (i < 0) continue;
-        const double* r = &all[std::size_t(i)*width];
-        Particle& p = particles[k++];
-        p.id = long(r[0]);
-        p.x = Vec3{r[1], r[2], r[3]};
-        p.v = Vec3{r[4], r[5], r[6]};
-        p.radius = r[7];
-        p.temperature = T ? r[8] : 0.0;
-    }
+    // from step to step whatever order LIGGGHTS keeps its atoms in (it
+    // sorts them, and atoms move between ranks at re-neighbouring).
+    std::vector<std::pair<long, int>> order(std::size_t(atom->nlocal));
+    for (int i = 0; i < atom->nlocal; ++i) order[std::size_t(i)] = {long(atom->tag[i]), i};
+    std::sort(order.begin(), order.end());
 
-    // remembered so setFluidForces() can find each local atom's force
-    gatheredIds_.resize(n);
-    for (std::size_t i = 0; i < n; ++i) gatheredIds_[i] = particles[i].id;
+    particles.resize(order.size());
+    localIds_.resize(order.size());
+    for (std::size_t k = 0; k < order.size(); ++k)
+    {
+        const int i = order[k].second;
+        Particle& p = particles[k];
+        p.id = order[k].first;
+        p.x = Vec3{atom->x[i][0], atom->x[i][1], atom->x[i][2]};
+        p.v = Vec3{atom->v[i][0], atom->v[i][1], atom->v[i][2]};
+        p.radius = atom->radius[i];
+        p.temperature = T ? T[i] : 0.0;
+        localIds_[k] = p.id;
+    }
 }
 
 
 template<class Store>
-void LiggghtsDem::scatterToAtoms(std::vector<double>& rows, int width, Store store)
+void LiggghtsDem::toAtoms(const std::vector<double>& rows, int width, Store store)
 {
-    if (rows.size() != std::size_t(width)*gatheredIds_.size())
+    if (rows.size() != std::size_t(width)*localIds_.size())
     {
-        throw std::logic_error("LiggghtsDem: per-particle data differs from gather");
+        throw std::logic_error("LiggghtsDem: per-particle data differs from localParticles");
     }
-    MPI_Allreduce
-    (
-        MPI_IN_PLACE, rows.data(), int(rows.size()), MPI_DOUBLE, MPI_SUM, comm_
-    );
-
     // the atom map (atom_modify map array, required of coupled inputs)
-    // gives each gathered id's local atom; ids owned by other ranks map to
-    // ghosts or nothing
     auto* atom = lmp_->atom;
-    for (std::size_t k = 0; k < gatheredIds_.size(); ++k)
+    for (std::size_t k = 0; k < localIds_.size(); ++k)
     {
-        const int i = atom->map(int(gatheredIds_[k]));
-        if (i < 0 || i >= atom->nlocal) continue;
+        const int i = atom->map(int(localIds_[k]));
+        if (i < 0 || i >= atom->nlocal)
+        {
+            throw std::logic_error("LiggghtsDem: an atom left this rank between steps");
+        }
         store(i, &rows[std::size_t(width)*k]);
     }
 }
@@ -359,7 +323,7 @@ void LiggghtsDem::setFluidForces(const std::vector<Vec3>& forces)
         rows[3*i + 2] = forces[i].z;
     }
     double** drag = dragForce_->array_atom;
-    scatterToAtoms
+    toAtoms
     (
         rows, 3,
         [drag](int i, const double* f) { for (int d = 0; d < 3; ++d) drag[i][d] = f[d]; }
@@ -369,9 +333,8 @@ void LiggghtsDem::setFluidForces(const std::vector<Vec3>& forces)
 
 void LiggghtsDem::setHeatFluxes(const std::vector<double>& q)
 {
-    std::vector<double> rows(q);
     double* flux = convectiveHeatFlux_->vector_atom;
-    scatterToAtoms(rows, 1, [flux](int i, const double* qi) { flux[i] = *qi; });
+    toAtoms(q, 1, [flux](int i, const double* qi) { flux[i] = *qi; });
 }
 
 
@@ -428,6 +391,15 @@ long LiggghtsDem::nParticles() const
 }
 
 
+double LiggghtsDem::reach() const
+{
+    double rMax = 0;
+    for (int i = 0; i < lmp_->atom->nlocal; ++i) rMax = std::max(rMax, lmp_->atom->radius[i]);
+    MPI_Allreduce(MPI_IN_PLACE, &rMax, 1, MPI_DOUBLE, MPI_MAX, comm_);
+    return rMax + lmp_->neighbor->skin;
+}
+
+
 double LiggghtsDem::totalMass() const
 {
     double m = 0;
@@ -477,6 +449,36 @@ double LiggghtsDem::maxNormalStiffness() const
 void LiggghtsDem::command(const std::string& cmd)
 {
     lmp_->input->one(cmd.c_str());
+}
+
+
+void LiggghtsDem::setSlabs(const std::vector<double>& cuts)
+{
+    auto* comm = lmp_->comm;
+    auto* domain = lmp_->domain;
+    int nProcs = 1;
+    MPI_Comm_size(comm_, &nProcs);
+    if
+    (
+        comm->procgrid[0] != nProcs || comm->procgrid[1] != 1
+     || comm->procgrid[2] != 1 || int(cuts.size()) != nProcs + 1
+    )
+    {
+        throw InputError
+        (
+            "LIGGGHTS input: a parallel coupled run expects 'processors * 1 1' "
+            "(the gas mesh is split into x-slabs), got a "
+          + std::to_string(comm->procgrid[0]) + " x "
+          + std::to_string(comm->procgrid[1]) + " x "
+          + std::to_string(comm->procgrid[2]) + " processor grid"
+        );
+    }
+    for (int r = 1; r < nProcs; ++r)
+    {
+        comm->xsplit[r] = (cuts[r] - domain->boxlo[0])/domain->xprd;
+    }
+    domain->set_local_box();
+    setup();   // its exchange moves the atoms to their new subdomains
 }
 
 
