@@ -20,8 +20,10 @@ struct Subcommand
 // one, prints `usage` and returns 2; with -h/--help/help, prints it and
 // returns 0; an unknown name throws InputError
 // "<command>: unknown command 'x' (see procsim <command> --help)".
-// `command` is empty for procsim itself.
+// `command` is empty for procsim itself; `noun` names the choices in that
+// message ("model" for plume).
 int runSubcommand(const std::string& command, std::string_view usage,
-                  const std::vector<Subcommand>& table, int argc, char** argv);
+                  const std::vector<Subcommand>& table, int argc, char** argv,
+                  const std::string& noun = "command");
 
 } // namespace procsim
