@@ -1,9 +1,11 @@
 // procsim: process models from the source papers, one subcommand each.
-#include <cstring>
 #include <iostream>
 #include <string>
+#include <vector>
 
+#include "Texts.hpp"
 #include "common/Cli.hpp"
+#include "common/Subcommands.hpp"
 
 #ifdef PROCSIM_WITH_KINETICS
 #include "kinetics/Main.hpp"
@@ -18,14 +20,15 @@
 namespace
 {
 
-struct Command
+struct Model
 {
     const char* name;
-    const char* summary;
-    int (*run)(int, char**);
+    const char* summary;   // one line of procsim --help
+    int (*main)(int, char**);
 };
 
-const Command commands[] = {
+// the models this build has (each directory of src/procsim is optional)
+const Model models[] = {
 #ifdef PROCSIM_WITH_KINETICS
     {"kinetics", "wetted-wall corona reactor kinetics (phenol/acetaldehyde), fitting, corona formulas",
      procsim::kinetics::main},
@@ -40,33 +43,25 @@ const Command commands[] = {
 #endif
 };
 
-void usage(std::ostream& os)
-{
-    os << "usage: procsim <command> [options]   (procsim <command> --help)\n\n"
-          "Process models of the SpoutLab source papers. Inputs are YAML,\n"
-          "results CSV and PNG.\n\ncommands:\n";
-    for (const auto& c : commands)
-    {
-        os << "  " << c.name << std::string(12 - std::strlen(c.name), ' ') << c.summary << '\n';
-    }
-}
-
 } // namespace
 
 int main(int argc, char** argv)
 {
-    if (argc < 2 || procsim::isHelp(argv[1]))
+    std::string usage(procsim::texts::help::procsim);
+    std::vector<procsim::Subcommand> table;
+    for (const auto& m : models)
     {
-        usage(std::cout);
-        return argc < 2 ? 2 : 0;
+        usage += "  " + std::string(m.name) + std::string(12 - std::string(m.name).size(), ' ') + m.summary + '\n';
+        // each model runs guarded: one line for bad input, outputs only on success
+        table.push_back({m.name, [&m](int c, char** v) { return procsim::runGuarded(m.main, c, v); }});
     }
-    for (const auto& c : commands)
+    try
     {
-        if (argv[1] == std::string(c.name))
-        {
-            return procsim::runGuarded(c.run, argc - 1, argv + 1);
-        }
+        return procsim::runSubcommand("", usage, table, argc, argv);
     }
-    std::cerr << "procsim: unknown command '" << argv[1] << "' (see procsim --help)\n";
-    return 2;
+    catch (const procsim::InputError& e)
+    {
+        std::cerr << "procsim: " << e.what() << '\n';
+        return 2;
+    }
 }

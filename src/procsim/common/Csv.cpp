@@ -3,7 +3,6 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <iomanip>
 #include <limits>
 #include <memory>
 #include <mutex>
@@ -49,11 +48,12 @@ bool isMissing(const std::string& cell)
 
 } // namespace
 
-std::string formatNumber(double v, int significant)
+void createOutputDirectory(const std::string& dir)
 {
-    std::ostringstream os;
-    os << std::setprecision(significant) << v;
-    return os.str();
+    namespace fs = std::filesystem;
+    fs::create_directories(dir);
+    if (!fs::is_directory(dir))
+        throw fs::filesystem_error("not a directory", dir, std::make_error_code(std::errc::not_a_directory));
 }
 
 OutputBatch::OutputBatch()
@@ -163,7 +163,6 @@ void writeTextFile(const std::string& path, const std::string& text)
 CsvWriter::CsvWriter(const std::string& path, const std::vector<std::string>& header)
     : file_(path), header_(header)
 {
-    file_.out() << std::setprecision(10);
     row(header);
 }
 
@@ -179,7 +178,7 @@ void CsvWriter::row(const std::vector<double>& values)
         }
     }
     std::ostream& out = file_.out();
-    for (std::size_t i = 0; i < values.size(); ++i) out << (i ? "," : "") << values[i];
+    for (std::size_t i = 0; i < values.size(); ++i) out << (i ? "," : "") << formatNumber(values[i], 10);
     out << '\n';
 }
 

@@ -12,11 +12,16 @@
 #include <string>
 #include <vector>
 
+#include "common/Format.hpp"
+
 namespace procsim
 {
 
-// v with `significant` digits, as CSV cells and summaries print numbers.
-std::string formatNumber(double v, int significant = 6);
+// The one way an output directory is made: with its parents
+// (std::filesystem).  Something in the way that is not a directory throws
+// std::filesystem::filesystem_error, which runGuarded reports as
+// "<command>: cannot create or use '<dir>': <reason>".
+void createOutputDirectory(const std::string& dir);
 
 class OutputBatch
 {

@@ -21,9 +21,3 @@ double residenceCorrected(double psi, double temperatureK, double referenceK);  
 double energeticEfficiency(double molarFlowIn, double molarFlowOut, double currentA, double voltageV);  // mol/J
 
 } // namespace procsim::kinetics::corona
-
-namespace procsim::kinetics
-{
-const char* coronaHelp();
-int coronaMain(int argc, char** argv);
-} // namespace procsim::kinetics

@@ -5,14 +5,11 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <iomanip>
-#include <iostream>
 #include <set>
-#include <sstream>
 
 #include "common/Ceres.hpp"
 #include "common/Csv.hpp"
-#include "common/Plot.hpp"
+#include "common/YamlInput.hpp"
 #include "kinetics/Run.hpp"
 
 namespace procsim::kinetics
@@ -195,69 +192,11 @@ FitResult fitParameters(std::vector<FitParameter> params, const std::vector<FitD
     return r;
 }
 
-const char* fitHelp()
+namespace
 {
-    return R"(usage: procsim kinetics fit FIT.yaml [-o DIR] [--no-plots]
 
-Estimates rate constants and/or [OH]-model parameters by least squares
-(Ceres, Levenberg-Marquardt) from measured concentrations, with standard errors.
-Each parameter is fitted as ln(value) (it stays positive); its standard error is
-from the covariance (J^T J)^-1 of the weighted residuals, times the residual
-variance chi2/(n - p) unless scale_by_residual_variance is false.
-
-FIT file:
-  title: text
-  parameters:                         what to estimate
-    - key: k.k3                       k.<reaction id>, or any numeric case key, e.g.
-                                      oh.slope_mg_per_L_per_mA ([OH] per mA) or
-                                      oh.concentration_mg_per_L
-      initial: 2.0e9                  starting value (> 0), in the key's units
-  data:                               one item per experiment
-    - name: "0.1 mA"                  label for tables and plots
-      case: ../base.yaml              case file (relative to the fit file)
-      set: {corona.current_mA: 0.1}   inputs of this experiment that differ from the case
-      csv: measured_0.1mA.csv         measurements: column time_h, then any of
-                                      <species>_mg_per_L and TOC_mgC_per_L ('nan' = missing)
-      sigma_mg_per_L: 0.3             measurement standard deviation (weights; default 1)
-  options:
-    scale_by_residual_variance: true
-    max_iterations: 100
-
-Writes to DIR (default <fit file name>_out):
-  fit_parameters.csv   key, initial, estimate, std_error, rel_std_error, ci95_low, ci95_high
-  fit_residuals.csv    dataset, time_h, quantity, measured, predicted, residual
-  fit_summary.txt      estimates, standard errors, correlation matrix, n, RMSE, R^2
-  fit_<n>.png          fitted curves over the data, one per dataset
-  fit_parity.png       predicted vs measured;  fit_residuals.png  residuals vs time
-)";
-}
-
-int fitMain(int argc, char** argv)
+std::vector<FitParameter> readParameters(const YamlInput& in)
 {
-    std::string file, dir;
-    bool plots = true;
-    for (int i = 2; i < argc; ++i)
-    {
-        const std::string s = argv[i];
-        if (s == "-o" || s == "--output")
-        {
-            if (i + 1 >= argc) throw InputError("kinetics fit: -o needs a directory");
-            if (!dir.empty()) throw InputError("kinetics fit: option -o given twice");
-            dir = argv[++i];
-        }
-        else if (s == "--no-plots") plots = false;
-        else if (!s.empty() && s[0] == '-') throw InputError("kinetics fit: unknown option '" + s + "'");
-        else if (file.empty()) file = s;
-        else throw InputError("kinetics fit: expected one fit file");
-    }
-    if (file.empty()) throw InputError("kinetics fit: expected one fit file");
-    const YamlInput in = YamlInput::load(file);
-    in.rejectUnknown({"title", "parameters", "data", "options"});
-    const std::filesystem::path base = std::filesystem::path(file).parent_path();
-    auto rel = [&](const std::string& f) {
-        std::filesystem::path p(f);
-        return (p.is_relative() ? base / p : p).string();
-    };
     std::vector<FitParameter> params;
     for (const auto& it : in.child("parameters").items())
     {
@@ -267,159 +206,109 @@ int fitMain(int argc, char** argv)
         p.initial = it.positive("initial");
         params.push_back(p);
     }
-    std::vector<FitDataset> data;
-    for (const auto& it : in.child("data").items())
+    return params;
+}
+
+// The CSV's measured columns, <species>_mg_per_L or TOC_mgC_per_L, into d.
+void readMeasured(FitDataset& d, const CsvTable& table, std::size_t timeColumn, const Case& c, const std::string& csvFile)
+{
+    for (std::size_t col = 0; col < table.header.size(); ++col)
     {
-        it.rejectUnknown({"name", "case", "set", "csv", "sigma_mg_per_L"});
-        FitDataset d;
-        d.name = it.text("name", "dataset " + std::to_string(data.size() + 1));
-        d.source = CaseSource::load(rel(it.text("case")));
-        if (it.has("set"))
-        {
-            const YamlInput s = it.child("set");
-            for (const auto& k : s.keys()) d.set.emplace_back(expandAlias(k), s.number(k));
-        }
-        if (it.has("sigma_mg_per_L")) d.sigma = it.positive("sigma_mg_per_L", "mg/L");
-        const std::string csvFile = rel(it.text("csv"));
-        const CsvTable table = readCsv(csvFile, true);   // "nan" or empty: not measured
-        const std::size_t tc = table.column("time_h", csvFile);
-        const Case c = d.source.build(d.set);   // validates the set keys
-        for (std::size_t col = 0; col < table.header.size(); ++col)
-        {
-            if (col == tc) continue;
-            const std::string h = table.header[col];
-            std::string q;
-            if (h == "TOC_mgC_per_L") q = "TOC";
-            else if (h.size() > 9 && h.substr(h.size() - 9) == "_mg_per_L") q = h.substr(0, h.size() - 9);
-            if (q.empty() || (q != "TOC" && !c.mech.hasSpecies(q)))
-                throw InputError(csvFile + ": column '" + h + "' is not time_h, TOC_mgC_per_L or <species>_mg_per_L of the mechanism");
-            d.quantities.push_back(q);
-            std::vector<double> v;
-            for (std::size_t r = 0; r < table.rows.size(); ++r)
-            {
-                const double x = table.rows[r][col];
-                if (!std::isnan(x) && !(std::fabs(x) <= maxConcentration))   // noise may dip below 0
-                    throw InputError(csvFile + ": data row " + std::to_string(r + 1) + ": column '" + h
-                                     + "' expected a concentration from -" + num(maxConcentration) + " to " + num(maxConcentration)
-                                     + " mg/L (or nan: not measured), got " + num(x));
-                v.push_back(x);
-            }
-            d.measured.push_back(v);
-        }
-        const double tMax = c.duration / 3600.0;
+        if (col == timeColumn) continue;
+        const std::string h = table.header[col];
+        std::string q;
+        if (h == "TOC_mgC_per_L") q = "TOC";
+        else if (h.size() > 9 && h.substr(h.size() - 9) == "_mg_per_L") q = h.substr(0, h.size() - 9);
+        if (q.empty() || (q != "TOC" && !c.mech.hasSpecies(q)))
+            throw InputError(csvFile + ": column '" + h + "' is not time_h, TOC_mgC_per_L or <species>_mg_per_L of the mechanism");
+        d.quantities.push_back(q);
+        std::vector<double> v;
         for (std::size_t r = 0; r < table.rows.size(); ++r)
         {
-            const double t = table.rows[r][tc];
-            if (!(t >= 0 && t <= tMax))
-                throw InputError(csvFile + ": data row " + std::to_string(r + 1) + ": column 'time_h' expected a time from 0 to "
-                                 + num(tMax) + " h (the case's duration), got " + num(t));
-            d.t.push_back(t * 3600.0);
+            const double x = table.rows[r][col];
+            if (!std::isnan(x) && !(std::fabs(x) <= maxConcentration))   // noise may dip below 0
+                throw InputError(csvFile + ": data row " + std::to_string(r + 1) + ": column '" + h
+                                 + "' expected a concentration from -" + num(maxConcentration) + " to " + num(maxConcentration)
+                                 + " mg/L (or nan: not measured), got " + num(x));
+            v.push_back(x);
         }
-        if (d.quantities.empty()) throw InputError(csvFile + ": no measured columns");
-        Overrides o = d.set;
-        for (const auto& p : params) o.emplace_back(p.key, p.initial);
-        d.source.build(o);   // the parameter keys exist
-        data.push_back(std::move(d));
+        d.measured.push_back(v);
     }
+    const double tMax = c.duration / 3600.0;
+    for (std::size_t r = 0; r < table.rows.size(); ++r)
+    {
+        const double t = table.rows[r][timeColumn];
+        if (!(t >= 0 && t <= tMax))
+            throw InputError(csvFile + ": data row " + std::to_string(r + 1) + ": column 'time_h' expected a time from 0 to "
+                             + num(tMax) + " h (the case's duration), got " + num(t));
+        d.t.push_back(t * 3600.0);
+    }
+    if (d.quantities.empty()) throw InputError(csvFile + ": no measured columns");
+}
+
+// One experiment: its case, fixed inputs, measurements and their sigma.
+FitDataset readDataset(const YamlInput& it, std::size_t index, const std::filesystem::path& base,
+                       const std::vector<FitParameter>& params)
+{
+    auto rel = [&](const std::string& f) {
+        std::filesystem::path p(f);
+        return (p.is_relative() ? base / p : p).string();
+    };
+    it.rejectUnknown({"name", "case", "set", "csv", "sigma_mg_per_L"});
+    FitDataset d;
+    d.name = it.text("name", "dataset " + std::to_string(index + 1));
+    d.source = CaseSource::load(rel(it.text("case")));
+    if (it.has("set"))
+    {
+        const YamlInput s = it.child("set");
+        for (const auto& k : s.keys()) d.set.emplace_back(expandAlias(k), s.number(k));
+    }
+    if (it.has("sigma_mg_per_L")) d.sigma = it.positive("sigma_mg_per_L", "mg/L");
+    const std::string csvFile = rel(it.text("csv"));
+    const CsvTable table = readCsv(csvFile, true);   // "nan" or empty: not measured
+    const Case c = d.source.build(d.set);            // validates the set keys
+    readMeasured(d, table, table.column("time_h", csvFile), c, csvFile);
+    Overrides o = d.set;
+    for (const auto& p : params) o.emplace_back(p.key, p.initial);
+    d.source.build(o);   // the parameter keys exist
+    return d;
+}
+
+FitOptions readOptions(const YamlInput& in)
+{
     FitOptions opt;
-    if (in.has("options"))
-    {
-        const YamlInput o = in.child("options");
-        o.rejectUnknown({"scale_by_residual_variance", "max_iterations"});
-        const std::string s = o.text("scale_by_residual_variance", "true");
-        if (s != "true" && s != "false") throw o.error("scale_by_residual_variance", "true or false");
-        opt.scaleByResidualVariance = s == "true";
-        if (o.has("max_iterations")) opt.maxIterations = static_cast<int>(o.integer("max_iterations", 1, 100000));
-    }
+    if (!in.has("options")) return opt;
+    const YamlInput o = in.child("options");
+    o.rejectUnknown({"scale_by_residual_variance", "max_iterations"});
+    const std::string s = o.text("scale_by_residual_variance", "true");
+    if (s != "true" && s != "false") throw o.error("scale_by_residual_variance", "true or false");
+    opt.scaleByResidualVariance = s == "true";
+    if (o.has("max_iterations")) opt.maxIterations = static_cast<int>(o.integer("max_iterations", 1, 100000));
+    return opt;
+}
 
-    const FitResult r = fitParameters(params, data, opt);
-    if (dir.empty()) dir = std::filesystem::path(file).stem().string() + "_out";
-    std::filesystem::create_directories(dir);
-    {
-        CsvWriter csv(dir + "/fit_parameters.csv", {"key", "initial", "estimate", "std_error", "rel_std_error", "ci95_low", "ci95_high"});
-        for (const auto& p : r.parameters)
-            csv.row(std::vector<std::string>{p.key, num(p.initial), num(p.estimate), num(p.stdError), num(p.stdError / p.estimate),
-                                             num(p.estimate * std::exp(-1.96 * p.lnStdError)),
-                                             num(p.estimate * std::exp(1.96 * p.lnStdError))});
-        csv.close();
-    }
-    {
-        CsvWriter csv(dir + "/fit_residuals.csv", {"dataset", "time_h", "quantity", "measured", "predicted", "residual"});
-        for (const auto& e : r.residuals)
-            csv.row(std::vector<std::string>{e.dataset, num(e.t / 3600.0), e.quantity, num(e.measured), num(e.predicted),
-                                             num(e.measured - e.predicted)});
-        csv.close();
-    }
-    std::ostringstream os;
-    os << "fit " << in.text("title", file) << ": " << (r.converged ? "converged" : "NOT converged") << " (" << r.report << ")\n";
-    os << "  " << std::left << std::setw(28) << "parameter" << std::setw(14) << "initial" << std::setw(14) << "estimate"
-       << std::setw(14) << "std error" << "rel. error\n";
-    for (const auto& p : r.parameters)
-        os << "  " << std::setw(28) << p.key << std::setw(14) << num(p.initial, 4) << std::setw(14) << num(p.estimate, 5)
-           << std::setw(14) << num(p.stdError, 3) << num(100 * p.stdError / p.estimate, 3) << " %\n";
-    os << std::right << "  correlation of ln(parameters):\n";
-    for (Eigen::Index i = 0; i < r.correlation.rows(); ++i)
-    {
-        os << "   ";
-        for (Eigen::Index j = 0; j < r.correlation.cols(); ++j) os << std::setw(8) << num(r.correlation(i, j), 3);
-        os << '\n';
-    }
-    os << "  points " << r.points << ", RMSE " << num(r.rmse, 4) << " mg/L, R^2 " << num(r.r2, 5) << ", chi2 " << num(r.chi2, 5)
-       << (opt.scaleByResidualVariance ? " (errors scaled by chi2/(n-p))" : " (errors from the given sigma)") << '\n';
-    writeTextFile(dir + "/fit_summary.txt", os.str());
-    std::cout << os.str() << "  output: " << dir << "/\n";
-    if (!plots) return 0;
+} // namespace
 
-    // fitted curves over the data
-    for (std::size_t k = 0; k < data.size(); ++k)
-    {
-        const auto& d = data[k];
-        const double tEnd = std::max(d.t.empty() ? 0.0 : *std::max_element(d.t.begin(), d.t.end()), 3600.0);
-        std::vector<double> fine;
-        for (int i = 0; i <= 200; ++i) fine.push_back(tEnd * i / 200.0);
-        Overrides best;
-        for (const auto& p : r.parameters) best.emplace_back(p.key, p.estimate);
-        const auto curve = predictAt(d, best, fine);
-        const std::string cf = dir + "/fit_curve_" + std::to_string(k + 1) + ".csv";
-        const std::string mf = dir + "/fit_data_" + std::to_string(k + 1) + ".csv";
-        std::vector<std::string> h = {"time_h"};
-        for (const auto& q : d.quantities) h.push_back(q);
-        {
-            CsvWriter csv(cf, h);
-            for (std::size_t i = 0; i < fine.size(); ++i)
-            {
-                std::vector<double> row = {fine[i] / 3600.0};
-                for (const auto& c : curve) row.push_back(c[i]);
-                csv.row(row);
-            }
-            csv.close();
-            CsvWriter mcsv(mf, h);
-            for (std::size_t i = 0; i < d.t.size(); ++i)
-            {
-                std::vector<double> row = {d.t[i] / 3600.0};
-                for (const auto& c : d.measured) row.push_back(c[i]);
-                mcsv.row(row);
-            }
-            mcsv.close();
-        }
-        std::ostringstream gp;
-        gp << "set termoption noenhanced\nset datafile separator ','\nset grid\nset key outside right\nset xlabel 'time (h)'\n"
-              "set ylabel 'mg/L (TOC: mg C/L)'\nset title 'fit: " << d.name << "'\nplot ";
-        for (std::size_t q = 0; q < d.quantities.size(); ++q)
-            gp << (q ? ", " : "") << "'" << cf << "' using 1:" << q + 2 << " with lines lw 2 lc " << q + 1 << " title '" << d.quantities[q]
-               << " model', '" << mf << "' using 1:" << q + 2 << " with points pt 7 lc " << q + 1 << " title '" << d.quantities[q] << " data'";
-        gp << '\n';
-        plotPng(dir + "/fit_" + std::to_string(k + 1) + ".png", gp.str());
-    }
-    const std::string res = dir + "/fit_residuals.csv";
-    plotPng(dir + "/fit_parity.png",
-            "set termoption noenhanced\nset datafile separator ','\nset grid\nset xlabel 'measured (mg/L)'\nset ylabel 'predicted (mg/L)'\n"
-            "set title 'goodness of fit: R^2 = " + num(r.r2, 4) + "'\nset size square\nplot '" + res +
-                "' using 4:5 with points pt 7 title 'data', x with lines dt 2 title 'y = x'\n");
-    plotPng(dir + "/fit_residuals.png",
-            "set termoption noenhanced\nset datafile separator ','\nset grid\nset xlabel 'time (h)'\nset ylabel 'measured - predicted (mg/L)'\n"
-            "set title 'residuals'\nplot '" + res + "' using 2:6 with points pt 7 title 'residual', 0 with lines dt 2 notitle\n");
-    return 0;
+FitProblem readFitProblem(const std::string& file)
+{
+    const YamlInput in = YamlInput::load(file);
+    in.rejectUnknown({"title", "parameters", "data", "options"});
+    FitProblem f;
+    f.title = in.text("title", file);
+    f.parameters = readParameters(in);
+    const std::filesystem::path base = std::filesystem::path(file).parent_path();
+    for (const auto& it : in.child("data").items())
+        f.data.push_back(readDataset(it, f.data.size(), base, f.parameters));
+    f.options = readOptions(in);
+    return f;
+}
+
+std::vector<std::vector<double>> predictCurve(const FitDataset& d, const std::vector<FitParameter>& params,
+                                              const std::vector<double>& times)
+{
+    Overrides o;
+    for (const auto& p : params) o.emplace_back(p.key, p.estimate);
+    return predictAt(d, o, times);
 }
 
 } // namespace procsim::kinetics

@@ -63,7 +63,19 @@ FitResult fitParameters(std::vector<FitParameter> params, const std::vector<FitD
 // the model's values for a dataset at its times with the given parameter values
 std::vector<std::vector<double>> predict(const FitDataset& d, const std::vector<FitParameter>& params, bool useEstimate);
 
-const char* fitHelp();
-int fitMain(int argc, char** argv);
+// the model at other times (e.g. a fine grid for plots), with the estimates
+std::vector<std::vector<double>> predictCurve(const FitDataset& d, const std::vector<FitParameter>& params,
+                                              const std::vector<double>& times);
+
+// A fit file (format: procsim kinetics fit --help): what to estimate, from
+// which experiments, with which options.
+struct FitProblem
+{
+    std::string title;   // default: the file name
+    std::vector<FitParameter> parameters;
+    std::vector<FitDataset> data;
+    FitOptions options;
+};
+FitProblem readFitProblem(const std::string& file);
 
 } // namespace procsim::kinetics

@@ -2,13 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
-#include <iomanip>
-#include <sstream>
 #include <stdexcept>
+
+#include <fmt/format.h>
 
 #include "common/Csv.hpp"
 #include "common/Plot.hpp"
+#include "kinetics/Texts.hpp"
 
 namespace procsim::kinetics
 {
@@ -26,7 +26,7 @@ double interpolate(const std::vector<double>& t, const std::vector<double>& v, d
     return v[i - 1] + w * (v[i] - v[i - 1]);
 }
 
-std::string fmt(double v, int prec = 4) { return formatNumber(v, prec); }
+std::string num(double v, int prec = 4) { return formatNumber(v, prec); }
 
 } // namespace
 
@@ -156,49 +156,74 @@ std::vector<std::string> plotSpecies(const Results& r)
     return out;
 }
 
-std::string summaryText(const Results& r, const Efficiency& e)
+std::vector<double> reportTimes(const Results& r)
 {
-    std::ostringstream os;
-    const Case& c = r.cas;
-    os << "case " << c.title << " (" << c.file << "), mechanism " << c.mech.name << ", solver "
-       << c.solver.method << " (" << r.steps << " steps)\n";
-    if (c.radicalFixed())
-        os << "  [" << c.mech.radical << "] = " << fmt(c.radicalConcentration() * 1000.0 * c.mech.species[c.mech.radicalIndex()].molarMass)
-           << " mg/L = " << fmt(c.radicalConcentration()) << " mol/L (" << c.oh.kind << ", I = " << c.current << " mA)\n";
-    std::vector<double> times = c.reportTimes;
+    std::vector<double> times = r.cas.reportTimes;
     if (times.empty() || times.back() < r.t.back()) times.push_back(r.t.back());
-    const auto names = plotSpecies(r);
-    os << "  time_h";
-    for (const auto& n : names) os << std::setw(11) << n;
-    os << std::setw(11) << "TOC" << "   (mg/L; TOC mg C/L)\n";
-    for (double ts : times)
-    {
-        os << "  " << std::setw(6) << fmt(ts / 3600.0, 3);
-        for (const auto& n : names) os << std::setw(11) << fmt(r.value(n, ts));
-        os << std::setw(11) << fmt(r.value("TOC", ts)) << '\n';
-    }
-    if (e.halfReached)
-        os << "  TOC half time (TOC = 1/2 TOC without discharge): " << fmt(e.tHalf / 3600.0) << " h\n";
-    else
-        os << "  TOC half time: not reached within " << fmt(r.t.back() / 3600.0) << " h\n";
-    if (c.voltage > 0)
-    {
-        os << "  energetic efficiency at " << c.current << " mA, " << c.voltage << " kV:";
-        if (e.halfReached) os << " J_TOC = " << fmt(e.jToc * 1e9) << "e-9 mol C/J (eq 18)";
-        for (const auto& [n, j] : e.jLiquid) os << "; J_" << n << " = " << fmt(j * 1e9) << "e-9 mol/J (eq 19)";
-        for (const auto& [n, j] : e.jGas) os << "; J_" << n << " = " << fmt(j * 1e9) << "e-9 mol/J (eq 20)";
-        os << '\n';
-    }
-    const std::size_t last = r.t.size() - 1;
-    os << "  carbon: initial " << fmt(r.carbonInitial[last] * 1e3, 6) << " mmol + fed " << fmt(r.carbonFed[last] * 1e3, 6)
-       << " mmol = in solution " << fmt(r.toc[last] / carbonMolarMass / 1000.0 * c.volume * 1e3, 6) << " mmol + CO2 "
-       << fmt(r.inorganicCarbon[last] * 1e3, 6) << " mmol; max relative imbalance " << fmt(maxCarbonError(r), 3) << '\n';
-    return os.str();
+    return times;
 }
 
-void writeRun(const Results& r, const Efficiency& e, const std::string& dir, bool plots)
+namespace
 {
-    std::filesystem::create_directories(dir);
+
+// The plotted species and TOC at every report time.
+std::string valuesTable(const Results& r)
+{
+    const auto names = plotSpecies(r);
+    std::string os = "  time_h";
+    for (const auto& n : names) os += fmt::format("{:>11}", n);
+    os += fmt::format("{:>11}   (mg/L; TOC mg C/L)\n", "TOC");
+    for (double ts : reportTimes(r))
+    {
+        os += fmt::format("  {:>6}", num(ts / 3600.0, 3));
+        for (const auto& n : names) os += fmt::format("{:>11}", num(r.value(n, ts)));
+        os += fmt::format("{:>11}\n", num(r.value("TOC", ts)));
+    }
+    return os;
+}
+
+// Energetic efficiencies, paper eqs 18-20 (values in 1e-9 mol/J).
+std::string efficiencyLine(const Results& r, const Efficiency& e)
+{
+    std::string os = fmt::format("  energetic efficiency at {} mA, {} kV:", formatNumber(r.cas.current),
+                                 formatNumber(r.cas.voltage));
+    if (e.halfReached) os += " J_TOC = " + num(e.jToc * 1e9) + "e-9 mol C/J (eq 18)";
+    for (const auto& [n, j] : e.jLiquid) os += "; J_" + n + " = " + num(j * 1e9) + "e-9 mol/J (eq 19)";
+    for (const auto& [n, j] : e.jGas) os += "; J_" + n + " = " + num(j * 1e9) + "e-9 mol/J (eq 20)";
+    return os + "\n";
+}
+
+} // namespace
+
+std::string summaryText(const Results& r, const Efficiency& e)
+{
+    const Case& c = r.cas;
+    std::string os = fmt::format("case {} ({}), mechanism {}, solver {} ({} steps)\n", c.title, c.file, c.mech.name,
+                                 c.solver.method, r.steps);
+    if (c.radicalFixed())
+        os += fmt::format("  [{}] = {} mg/L = {} mol/L ({}, I = {} mA)\n", c.mech.radical,
+                          num(c.radicalConcentration() * 1000.0 * c.mech.species[c.mech.radicalIndex()].molarMass),
+                          num(c.radicalConcentration()), c.oh.kind, formatNumber(c.current));
+    os += valuesTable(r);
+    if (e.halfReached)
+        os += "  TOC half time (TOC = 1/2 TOC without discharge): " + num(e.tHalf / 3600.0) + " h\n";
+    else
+        os += "  TOC half time: not reached within " + num(r.t.back() / 3600.0) + " h\n";
+    if (c.voltage > 0) os += efficiencyLine(r, e);
+    const std::size_t last = r.t.size() - 1;
+    os += fmt::format("  carbon: initial {} mmol + fed {} mmol = in solution {} mmol + CO2 {} mmol; max relative "
+                      "imbalance {}\n",
+                      num(r.carbonInitial[last] * 1e3, 6), num(r.carbonFed[last] * 1e3, 6),
+                      num(r.toc[last] / carbonMolarMass / 1000.0 * c.volume * 1e3, 6),
+                      num(r.inorganicCarbon[last] * 1e3, 6), num(maxCarbonError(r), 3));
+    return os;
+}
+
+namespace
+{
+
+void writeTimeseries(const Results& r, const std::string& path)
+{
     const auto& sp = r.cas.mech.species;
     std::vector<std::string> header = {"time_h", "time_s"};
     for (const auto& s : sp) header.push_back(s.name + "_mg_per_L");
@@ -206,66 +231,67 @@ void writeRun(const Results& r, const Efficiency& e, const std::string& dir, boo
     for (const char* h : {"TOC_mgC_per_L", "TOC_no_discharge_mgC_per_L", "CO2_formed_mol", "carbon_fed_mol",
                           "carbon_balance_rel_error"})
         header.push_back(h);
+    CsvWriter csv(path, header);
+    for (std::size_t i = 0; i < r.t.size(); ++i)
     {
-        CsvWriter csv(dir + "/timeseries.csv", header);
-        for (std::size_t i = 0; i < r.t.size(); ++i)
-        {
-            std::vector<double> row = {r.t[i] / 3600.0, r.t[i]};
-            for (std::size_t s = 0; s < sp.size(); ++s) row.push_back(r.c[i][static_cast<Eigen::Index>(s)] * sp[s].molarMass * 1000.0);
-            for (std::size_t s = 0; s < sp.size(); ++s) row.push_back(r.c[i][static_cast<Eigen::Index>(s)]);
-            row.push_back(r.toc[i]);
-            row.push_back(r.tocNoDischarge(i));
-            row.push_back(r.inorganicCarbon[i]);
-            row.push_back(r.carbonFed[i]);
-            row.push_back(r.carbonError[i]);
-            csv.row(row);
-        }
-        csv.close();
+        std::vector<double> row = {r.t[i] / 3600.0, r.t[i]};
+        for (std::size_t s = 0; s < sp.size(); ++s) row.push_back(r.c[i][static_cast<Eigen::Index>(s)] * sp[s].molarMass * 1000.0);
+        for (std::size_t s = 0; s < sp.size(); ++s) row.push_back(r.c[i][static_cast<Eigen::Index>(s)]);
+        row.insert(row.end(), {r.toc[i], r.tocNoDischarge(i), r.inorganicCarbon[i], r.carbonFed[i], r.carbonError[i]});
+        csv.row(row);
     }
+    csv.close();
+}
+
+void writeSummaryCsv(const Results& r, const Efficiency& e, const std::string& path)
+{
+    CsvWriter csv(path, {"quantity", "value", "unit"});
+    auto put = [&](const std::string& q, double v, const std::string& u) {
+        csv.row(std::vector<std::string>{q, formatNumber(v, 10), u});
+    };
+    put("current", r.cas.current, "mA");
+    put("voltage", r.cas.voltage, "kV");
+    if (r.cas.radicalFixed()) put(r.cas.mech.radical, r.cas.radicalConcentration(), "mol/L");
+    for (double ts : reportTimes(r))
     {
-        CsvWriter csv(dir + "/summary.csv", {"quantity", "value", "unit"});
-        auto put = [&](const std::string& q, double v, const std::string& u) {
-            std::ostringstream os;
-            os << std::setprecision(10) << v;
-            csv.row(std::vector<std::string>{q, os.str(), u});
-        };
-        put("current", r.cas.current, "mA");
-        put("voltage", r.cas.voltage, "kV");
-        if (r.cas.radicalFixed()) put(r.cas.mech.radical, r.cas.radicalConcentration(), "mol/L");
-        std::vector<double> times = r.cas.reportTimes;
-        if (times.empty() || times.back() < r.t.back()) times.push_back(r.t.back());
-        for (double ts : times)
-        {
-            for (const auto& n : plotSpecies(r)) put(n + "@" + fmt(ts / 3600.0) + "h", r.value(n, ts), "mg/L");
-            put("TOC@" + fmt(ts / 3600.0) + "h", r.value("TOC", ts), "mg C/L");
-        }
-        if (e.halfReached) put("TOC_half_time", e.tHalf / 3600.0, "h");
-        if (e.halfReached && r.cas.voltage > 0) put("J_TOC", e.jToc, "mol C/J");
-        for (const auto& [n, j] : e.jLiquid) put("J_" + n, j, "mol/J");
-        for (const auto& [n, j] : e.jGas) put("J_" + n, j, "mol/J");
-        put("carbon_balance_max_rel_error", maxCarbonError(r), "-");
-        csv.close();
+        for (const auto& n : plotSpecies(r)) put(n + "@" + num(ts / 3600.0) + "h", r.value(n, ts), "mg/L");
+        put("TOC@" + num(ts / 3600.0) + "h", r.value("TOC", ts), "mg C/L");
     }
+    if (e.halfReached) put("TOC_half_time", e.tHalf / 3600.0, "h");
+    if (e.halfReached && r.cas.voltage > 0) put("J_TOC", e.jToc, "mol C/J");
+    for (const auto& [n, j] : e.jLiquid) put("J_" + n, j, "mol/J");
+    for (const auto& [n, j] : e.jGas) put("J_" + n, j, "mol/J");
+    put("carbon_balance_max_rel_error", maxCarbonError(r), "-");
+    csv.close();
+}
+
+// species.png and toc.png from timeseries.csv: species in mg/L from column 3,
+// TOC after the mol/L columns.
+void plotRun(const Results& r, const std::string& dir)
+{
+    const std::string csv = dir + "/timeseries.csv";
+    std::string names, columns;
+    for (const auto& n : plotSpecies(r))
+    {
+        names += n + " ";
+        columns += std::to_string(3 + r.cas.mech.index(n, "plot")) + " ";
+    }
+    plotPng(dir + "/species.png", texts::plots::species,
+            PlotVariables().set("csv", csv).set("title_text", r.cas.title).set("names", names).set("columns", columns));
+    plotPng(dir + "/toc.png", texts::plots::toc,
+            PlotVariables().set("csv", csv).set("title_text", r.cas.title)
+                .set("toc", double(3 + 2 * r.cas.mech.species.size())));
+}
+
+} // namespace
+
+void writeRun(const Results& r, const Efficiency& e, const std::string& dir, bool plots)
+{
+    createOutputDirectory(dir);
+    writeTimeseries(r, dir + "/timeseries.csv");
+    writeSummaryCsv(r, e, dir + "/summary.csv");
     writeTextFile(dir + "/summary.txt", summaryText(r, e));
-    if (!plots) return;
-    const std::string csvPath = dir + "/timeseries.csv";
-    std::ostringstream gp;
-    gp << "set termoption noenhanced\nset datafile separator ','\nset key outside right\nset grid\nset xlabel 'time (h)'\n"
-          "set ylabel 'concentration (mg/L)'\nset title '" << r.cas.title << ": species'\nplot ";
-    const auto names = plotSpecies(r);
-    for (std::size_t k = 0; k < names.size(); ++k)
-    {
-        const std::size_t s = r.cas.mech.index(names[k], "plot");
-        gp << (k ? ", " : "") << "'" << csvPath << "' using 1:" << (3 + s) << " with lines lw 2 title '" << names[k] << "'";
-    }
-    gp << '\n';
-    plotPng(dir + "/species.png", gp.str());
-    std::ostringstream gt;
-    const std::size_t tocCol = 3 + 2 * sp.size();
-    gt << "set termoption noenhanced\nset datafile separator ','\nset grid\nset xlabel 'time (h)'\nset ylabel 'TOC (mg C/L)'\n"
-          "set title '" << r.cas.title << ": TOC'\nplot '" << csvPath << "' using 1:" << tocCol
-       << " with lines lw 2 title 'TOC', '' using 1:" << tocCol + 1 << " with lines dt 2 title 'TOC without discharge'\n";
-    plotPng(dir + "/toc.png", gt.str());
+    if (plots) plotRun(r, dir);
 }
 
 } // namespace procsim::kinetics

@@ -50,6 +50,9 @@ std::string summaryText(const Results& r, const Efficiency& e);
 // writes timeseries.csv, summary.txt, summary.csv and (if plots) species.png, toc.png
 void writeRun(const Results& r, const Efficiency& e, const std::string& dir, bool plots);
 
+// the case's report times and the end of the run, s
+std::vector<double> reportTimes(const Results& r);
+
 // default species to plot: the case's list or every organic species present
 std::vector<std::string> plotSpecies(const Results& r);
 

@@ -2,14 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
-#include <iomanip>
 #include <iostream>
-#include <sstream>
+
+#include <fmt/format.h>
 
 #include "common/Checked.hpp"
 #include "common/Csv.hpp"
 #include "common/Plot.hpp"
+#include "kinetics/Texts.hpp"
 
 namespace procsim::kinetics
 {
@@ -17,8 +17,88 @@ namespace procsim::kinetics
 namespace
 {
 
-
 std::string num(double v) { return formatNumber(v); }
+
+// Every combination of the swept values (cartesian product, last key fastest).
+std::vector<Overrides> combinations(const std::vector<SweepDim>& dims)
+{
+    std::vector<Overrides> combos = {{}};
+    for (const auto& d : dims)
+    {
+        std::vector<Overrides> next;
+        for (const auto& c : combos)
+            for (double v : d.values)
+            {
+                Overrides o = c;
+                o.emplace_back(d.key, v);
+                next.push_back(o);
+            }
+        combos = next;
+    }
+    return combos;
+}
+
+// sweep_summary.csv: swept values, outputs at report times, efficiencies.
+void writeSweepSummary(const std::vector<SweepRun>& runs, const std::vector<SweepDim>& dims,
+                       const std::vector<double>& times, const std::vector<std::string>& names, const std::string& path)
+{
+    std::vector<std::string> header;
+    for (const auto& d : dims) header.push_back(shortKey(d.key));
+    for (double ts : times)
+        for (const auto& n : names)
+            header.push_back(n + "_at_" + num(ts / 3600.0) + "h_" + (n == "TOC" ? "mgC_per_L" : "mg_per_L"));
+    header.push_back("TOC_half_time_h");
+    header.push_back("J_TOC_mol_per_J");
+    CsvWriter csv(path, header);
+    for (const auto& run : runs)
+    {
+        std::vector<double> row;
+        for (const auto& kv : run.values) row.push_back(kv.second);
+        for (double ts : times)
+            for (const auto& n : names) row.push_back(run.results.value(n, ts));
+        row.push_back(run.eff.halfReached ? run.eff.tHalf / 3600.0 : NAN);
+        row.push_back(run.eff.halfReached ? run.eff.jToc : NAN);
+        csv.row(row);
+    }
+    csv.close();
+}
+
+// family_<quantity>.png: each quantity over time, one curve per member.
+void plotFamilies(const std::vector<SweepRun>& runs, const std::vector<std::string>& names, const std::string& dir)
+{
+    const Results& first = runs.front().results;
+    std::string labels;
+    for (const auto& run : runs) labels += run.label + " ";
+    for (const auto& n : names)
+    {
+        const std::size_t col = n == "TOC" ? 3 + 2 * first.cas.mech.species.size() : 3 + first.cas.mech.index(n, "plot");
+        plotPng(dir + "/family_" + n + ".png", texts::plots::family,
+                PlotVariables().set("dir", dir).set("labels", labels).set("col", double(col))
+                    .set("ylabel_text", n + (n == "TOC" ? " (mg C/L)" : " (mg/L)"))
+                    .set("title_text", first.cas.title + ": " + n));
+    }
+}
+
+// sweep_<quantity>_at_<t>h.png: values at report times against the last
+// swept key (one curve per value of the first).
+void plotSweeps(const std::vector<SweepDim>& dims, const std::vector<double>& times,
+                const std::vector<std::string>& names, const std::string& title, const std::string& dir)
+{
+    const std::size_t nd = dims.size();
+    std::string values0;
+    if (nd > 1)
+        for (double v : dims.front().values) values0 += num(v) + " ";
+    for (std::size_t it = 0; it < times.size(); ++it)
+        for (std::size_t q = 0; q < names.size(); ++q)
+        {
+            const std::string at = num(times[it] / 3600.0);
+            plotPng(dir + "/sweep_" + names[q] + "_at_" + at + "h.png", texts::plots::sweep,
+                    PlotVariables().set("csv", dir + "/sweep_summary.csv").set("xcol", double(nd))
+                        .set("col", double(nd + 1 + it * names.size() + q))
+                        .set("xlabel_text", shortKey(dims.back().key)).set("ylabel_text", names[q] + " at " + at + " h")
+                        .set("title_text", title).set("key0", shortKey(dims.front().key)).set("values0", values0));
+        }
+}
 
 } // namespace
 
@@ -35,19 +115,7 @@ std::string shortKey(const std::string& key)
 std::vector<SweepRun> runSweep(const CaseSource& src, const Overrides& set, const std::vector<SweepDim>& dims, const std::string& dir,
                                bool plots, bool quiet, const std::string& solver)
 {
-    std::vector<Overrides> combos = {{}};
-    for (const auto& d : dims)
-    {
-        std::vector<Overrides> next;
-        for (const auto& c : combos)
-            for (double v : d.values)
-            {
-                Overrides o = c;
-                o.emplace_back(d.key, v);
-                next.push_back(o);
-            }
-        combos = next;
-    }
+    const std::vector<Overrides> combos = combinations(dims);
     // every member is built (validated) and solved before anything is written
     std::vector<SweepRun> runs;
     std::vector<Case> cases;
@@ -76,74 +144,15 @@ std::vector<SweepRun> runSweep(const CaseSource& src, const Overrides& set, cons
         if (!quiet) std::cout << "--- " << run.label << '\n' << summaryText(run.results, run.eff);
     }
 
-    // summary table: swept values, outputs at report times, efficiencies
     const Results& first = runs.front().results;
-    std::vector<double> times = first.cas.reportTimes;
-    if (times.empty() || times.back() < first.t.back()) times.push_back(first.t.back());
+    const std::vector<double> times = reportTimes(first);
     auto names = plotSpecies(first);
     names.push_back("TOC");
-    std::vector<std::string> header;
-    for (const auto& d : dims) header.push_back(shortKey(d.key));
-    for (double ts : times)
-        for (const auto& n : names)
-            header.push_back(n + "_at_" + num(ts / 3600.0) + "h_" + (n == "TOC" ? "mgC_per_L" : "mg_per_L"));
-    header.push_back("TOC_half_time_h");
-    header.push_back("J_TOC_mol_per_J");
-    std::filesystem::create_directories(dir);
-    {
-        CsvWriter csv(dir + "/sweep_summary.csv", header);
-        for (const auto& run : runs)
-        {
-            std::vector<double> row;
-            for (const auto& kv : run.values) row.push_back(kv.second);
-            for (double ts : times)
-                for (const auto& n : names) row.push_back(run.results.value(n, ts));
-            row.push_back(run.eff.halfReached ? run.eff.tHalf / 3600.0 : NAN);
-            row.push_back(run.eff.halfReached ? run.eff.jToc : NAN);
-            csv.row(row);
-        }
-        csv.close();
-    }
+    createOutputDirectory(dir);
+    writeSweepSummary(runs, dims, times, names, dir + "/sweep_summary.csv");
     if (!plots) return runs;
-
-    // family plots: each quantity vs time, one curve per run
-    const auto& sp = first.cas.mech.species;
-    for (const auto& n : names)
-    {
-        const std::size_t col = n == "TOC" ? 3 + 2 * sp.size() : 3 + first.cas.mech.index(n, "plot");
-        std::ostringstream gp;
-        gp << "set termoption noenhanced\nset datafile separator ','\nset grid\nset key outside right\nset xlabel 'time (h)'\nset ylabel '" << n
-           << (n == "TOC" ? " (mg C/L)" : " (mg/L)") << "'\nset title '" << first.cas.title << ": " << n << "'\nplot ";
-        for (std::size_t k = 0; k < runs.size(); ++k)
-            gp << (k ? ", " : "") << "'" << dir << "/" << runs[k].label << "/timeseries.csv' using 1:" << col
-               << " with lines lw 2 title '" << runs[k].label << "'";
-        gp << '\n';
-        plotPng(dir + "/family_" + n + ".png", gp.str());
-    }
-    // values at report times against the last swept key (one curve per value of the first)
-    const std::size_t nd = dims.size();
-    const std::size_t xCol = nd;   // 1-based column of the last swept key
-    for (std::size_t it = 0; it < times.size(); ++it)
-        for (std::size_t q = 0; q < names.size(); ++q)
-        {
-            const std::size_t col = nd + 1 + it * names.size() + q;
-            std::ostringstream gp;
-            gp << "set termoption noenhanced\nset datafile separator ','\nset grid\nset key outside right\nset xlabel '" << shortKey(dims.back().key)
-               << "'\nset ylabel '" << names[q] << " at " << num(times[it] / 3600.0) << " h'\nset title '" << first.cas.title
-               << "'\n";
-            if (nd == 1)
-                gp << "plot '" << dir << "/sweep_summary.csv' using " << xCol << ":" << col << " with linespoints lw 2 pt 7 notitle\n";
-            else
-            {
-                gp << "plot ";
-                const auto& d0 = dims.front();
-                for (std::size_t k = 0; k < d0.values.size(); ++k)
-                    gp << (k ? ", " : "") << "'" << dir << "/sweep_summary.csv' using ($1==" << num(d0.values[k]) << "?$" << xCol
-                       << ":1/0):" << col << " with linespoints lw 2 pt 7 title '" << shortKey(d0.key) << "=" << num(d0.values[k]) << "'";
-                gp << '\n';
-            }
-            plotPng(dir + "/sweep_" + names[q] + "_at_" + num(times[it] / 3600.0) + "h.png", gp.str());
-        }
+    plotFamilies(runs, names, dir);
+    plotSweeps(dims, times, names, first.cas.title, dir);
     return runs;
 }
 
@@ -213,36 +222,31 @@ std::vector<SensitivityRow> sensitivity(const CaseSource& src, const Overrides& 
 
 std::string sensitivityTable(const std::vector<SensitivityRow>& rows)
 {
-    std::ostringstream os;
-    os << "deviation (%) of each output when one rate constant changes (at the chosen time; [largest over the run])\n";
-    os << std::setw(8) << "param" << std::setw(8) << "change";
+    std::string os = "deviation (%) of each output when one rate constant changes (at the chosen time; [largest over "
+                     "the run])\n";
+    os += fmt::format("{:>8}{:>8}", "param", "change");
     std::vector<std::string> outs;
     for (const auto& r : rows)
     {
         if (std::find(outs.begin(), outs.end(), r.output) != outs.end()) break;
         outs.push_back(r.output);
     }
-    for (const auto& o : outs) os << std::setw(20) << o;
-    os << '\n';
+    for (const auto& o : outs) os += fmt::format("{:>20}", o);
+    os += '\n';
     for (std::size_t i = 0; i < rows.size(); i += outs.size())
     {
-        os << std::setw(8) << rows[i].parameter << std::setw(7) << std::showpos << std::setprecision(3)
-           << rows[i].change * 100 << "%" << std::noshowpos;
+        os += fmt::format("{:>8}{:>+7.3g}%", rows[i].parameter, rows[i].change * 100);
         for (std::size_t k = 0; k < outs.size(); ++k)
-        {
-            std::ostringstream cell;
-            cell << std::fixed << std::setprecision(2) << rows[i + k].deviation * 100 << " [" << rows[i + k].maxDeviation * 100
-                 << "]";
-            os << std::setw(20) << cell.str();
-        }
-        os << '\n';
+            os += fmt::format("{:>20}", fmt::format("{:.2f} [{:.2f}]", rows[i + k].deviation * 100,
+                                                    rows[i + k].maxDeviation * 100));
+        os += '\n';
     }
-    return os.str();
+    return os;
 }
 
 void writeSensitivity(const std::vector<SensitivityRow>& rows, const std::string& dir)
 {
-    std::filesystem::create_directories(dir);
+    createOutputDirectory(dir);
     CsvWriter csv(dir + "/sensitivity.csv", {"parameter", "change_percent", "output", "base_value", "perturbed_value",
                                              "deviation_percent", "max_deviation_percent", "max_deviation_time_h"});
     for (const auto& r : rows)

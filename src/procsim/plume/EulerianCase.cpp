@@ -8,14 +8,17 @@
 #include <iomanip>
 #include <iostream>
 #include <mutex>
+#include <optional>
 #include <sstream>
 #include <thread>
 
 #include "common/Checked.hpp"
 #include "common/Cli.hpp"
+#include "common/CommandLine.hpp"
 #include "common/Csv.hpp"
 #include "common/Plot.hpp"
 #include "common/YamlInput.hpp"
+#include "plume/Texts.hpp"
 #include "plume/Vtk.hpp"
 
 namespace fs = std::filesystem;
@@ -25,38 +28,6 @@ namespace procsim::plume
 
 namespace
 {
-
-const char* kHelp =
-    "usage: procsim plume eulerian CASE.yaml [-o DIR] [--hours N] [--threads N]\n"
-    "\n"
-    "PM10 advection-diffusion over terrain (eq 3 of the Saraburi study) in\n"
-    "terrain-following coordinates: limited QUICK advection, Adams-Bashforth\n"
-    "time steps, constant K_H and K_V, 1/4-power-law wind made mass-consistent\n"
-    "over the terrain, area/volume/point sources with an emission reduction.\n"
-    "\n"
-    "  -o DIR        output directory (default: results)\n"
-    "  --hours N     run only the first N meteorology hours\n"
-    "  --threads N   scenarios run in parallel on N threads (default: all cores)\n"
-    "\n"
-    "CASE.yaml (paths relative to it; units in the key names):\n"
-    "  terrain: terrain.asc              ESRI ASCII grid of elevations [m]\n"
-    "  grid: {cell_size_m: 150, levels: 12, top_above_highest_m: 600, stretching: 2}\n"
-    "  dispersion: {K_H_m2_s: 200, K_V_m2_s: 1, advection: limited_quick (or quick, upwind),\n"
-    "               vertical_diffusion: implicit (Crank-Nicolson) or explicit,\n"
-    "               horizontal_diffusion: along_terrain or true_horizontal (needs explicit)}\n"
-    "  wind: {exponent: 0.25, reference_height_m: 10}\n"
-    "  time: {dt_s: auto, cfl_fraction: 0.9}   dt_s above the stability limit is an error\n"
-    "  meteorology: met.csv              hour, wind_speed_m_s, wind_direction_deg\n"
-    "  sources:   [{name, type: area|volume|point, x_m, y_m, size_m: [ex, ny], height_m |\n"
-    "               bottom_m, top_m, rate_g_s, controlled: true}]\n"
-    "  receptors: [{name, x_m, y_m, height_m}]\n"
-    "  scenarios: [{name, K_V_m2_s, K_H_m2_s, reduction}]   (default: one, no reduction)\n"
-    "  output: {vts_every_h: 6, background_ug_m3: 0, standard_24h_ug_m3: 120,\n"
-    "           measured_24h: measured.csv}   day, '<receptor> [ug/m3]' columns (< 0: none)\n"
-    "\n"
-    "Writes per scenario: receptors_hourly.csv, receptors_24h.csv, receptors_weekly.csv,\n"
-    "ground_mean.csv/.png, receptors_24h.png, C.pvd + vts/*.vts (ParaView); and\n"
-    "table.csv (run mean and highest 24-h average per receptor and scenario).\n";
 
 constexpr long maxStepsPerHour = 10000000;
 constexpr double maxCellUpdates = 1e12;   // ~6 h at ~5e7 cell updates per second
@@ -541,29 +512,16 @@ void writeScenarioOutputs(const EulerianCase& cs, const TerrainGrid& g, const Sc
 int eulerianMain(int argc, char** argv)
 {
     std::string casePath, outDir = "results";
-    int hoursLimit = 0;
-    unsigned threads = std::max(1u, std::thread::hardware_concurrency());
-    ArgReader args("eulerian", argc, argv);
-    while (args.next())
-    {
-        const std::string& arg = args.arg();
-        if (isHelp(arg))
-        {
-            std::cout << kHelp;
-            return 0;
-        }
-        if (arg == "-o") outDir = args.value();
-        else if (arg == "--hours") hoursLimit = static_cast<int>(args.positiveInteger());
-        else if (arg == "--threads") threads = static_cast<unsigned>(args.positiveInteger());
-        else if (args.isOption()) throw args.unknown("plume eulerian");
-        else if (casePath.empty()) casePath = arg;
-        else throw args.extraPositional();
-    }
-    if (casePath.empty())
-    {
-        std::cerr << kHelp;
-        return 2;
-    }
+    std::optional<long> hoursOpt, threadsOpt;
+    CommandLine cl("plume eulerian", std::string(texts::help::eulerian));
+    cl.input(casePath, "case file");
+    cl.text("-o", outDir);
+    cl.integer("--hours", hoursOpt);
+    cl.integer("--threads", threadsOpt);
+    if (!cl.parse(argc, argv)) return 0;
+    const int hoursLimit = hoursOpt ? static_cast<int>(*hoursOpt) : 0;   // 0: all the meteorology
+    const unsigned threads =
+        threadsOpt ? static_cast<unsigned>(*threadsOpt) : std::max(1u, std::thread::hardware_concurrency());
     const EulerianCase cs = loadEulerianCase(casePath);
     const auto grid = cs.makeGrid();
     const TerrainGrid& g = *grid;

@@ -5,12 +5,15 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 #include "common/Cli.hpp"
+#include "common/CommandLine.hpp"
 #include "common/Csv.hpp"
 #include "common/Plot.hpp"
 #include "common/YamlInput.hpp"
+#include "plume/Texts.hpp"
 
 namespace fs = std::filesystem;
 
@@ -19,34 +22,6 @@ namespace procsim::plume
 
 namespace
 {
-
-const char* kHelp =
-    "usage: procsim plume gaussian CASE.yaml [-o DIR]\n"
-    "\n"
-    "ISCST3-style steady Gaussian plume for each meteorology hour: Pasquill-\n"
-    "Gifford class from wind, cloud and the sun's elevation (or a 'stability'\n"
-    "column), ISC3's rural Pasquill-Gifford sigmas (or Briggs' rural curves),\n"
-    "reflection at the ground and the mixing height (A-D; none for E, F as in\n"
-    "ISC), dry deposition by source depletion; point, area (integrated over\n"
-    "n x n points) and volume (virtual point) sources; flat terrain, no plume\n"
-    "rise.\n"
-    "\n"
-    "  -o DIR   output directory (default: results)\n"
-    "\n"
-    "CASE.yaml (paths relative to it):\n"
-    "  meteorology: met.csv     hour, wind_speed_m_s, wind_direction_deg, temperature_C,\n"
-    "                           mixing_height_m, cloud_cover_oktas [, stability 1..6]\n"
-    "  site: {latitude_deg: 14.5, start_day_of_year: 6, start_hour: 0}\n"
-    "  deposition: {velocity_m_s: 0.005}          (0: no depletion)\n"
-    "  dispersion: {model: isc3_rural}            (default), briggs_rural, or\n"
-    "                                             {model: constant_k, K_H_m2_s, K_V_m2_s}\n"
-    "  area_subdivisions: 10\n"
-    "  reduction: 0.8                             removed fraction of controlled emissions\n"
-    "  sources / receptors                        as for 'procsim plume eulerian'\n"
-    "  output: {standard_24h_ug_m3: 120}\n"
-    "\n"
-    "Writes hourly.csv (class, wind and 1-h concentrations), daily.csv (24-h\n"
-    "averages), daily.png and a summary on the screen.\n";
 
 } // namespace
 
@@ -131,25 +106,10 @@ GaussianSetup parseGaussianSetup(const YamlInput& in)
 int gaussianMain(int argc, char** argv)
 {
     std::string casePath, outDir = "results";
-    ArgReader args("gaussian", argc, argv);
-    while (args.next())
-    {
-        const std::string& arg = args.arg();
-        if (isHelp(arg))
-        {
-            std::cout << kHelp;
-            return 0;
-        }
-        if (arg == "-o") outDir = args.value();
-        else if (args.isOption()) throw args.unknown("plume gaussian");
-        else if (casePath.empty()) casePath = arg;
-        else throw args.extraPositional();
-    }
-    if (casePath.empty())
-    {
-        std::cerr << kHelp;
-        return 2;
-    }
+    CommandLine cl("plume gaussian", std::string(texts::help::gaussian));
+    cl.input(casePath, "case file");
+    cl.text("-o", outDir);
+    if (!cl.parse(argc, argv)) return 0;
     const YamlInput in = YamlInput::load(casePath);
     std::vector<std::string> keys = gaussianSetupKeys();
     keys.push_back("meteorology");

@@ -8,14 +8,17 @@
 #include <iomanip>
 #include <iostream>
 #include <mutex>
+#include <optional>
 #include <sstream>
 #include <thread>
 
 #include "common/Checked.hpp"
 #include "common/Cli.hpp"
+#include "common/CommandLine.hpp"
 #include "common/Csv.hpp"
 #include "common/Plot.hpp"
 #include "common/YamlInput.hpp"
+#include "plume/Texts.hpp"
 #include "plume/GaussianCase.hpp"
 
 namespace fs = std::filesystem;
@@ -27,37 +30,6 @@ constexpr long maxYears = 100000;   // synthetic years: ~10 minutes per 1000 on 
 
 namespace
 {
-
-const char* kHelp =
-    "usage: procsim plume montecarlo CASE.yaml [-o DIR] [--years N] [--seed S] [--threads N]\n"
-    "\n"
-    "Fits gamma distributions to historical hourly meteorology (wind direction and\n"
-    "speed, temperature, mixing height, cloud cover; per month and 6-hour block),\n"
-    "generates N synthetic years with the weighting parameter w (normal scores\n"
-    "z_t = w z_{t-1} + sqrt(1-w^2) e_t mapped through the fitted gamma), runs the\n"
-    "Gaussian model (see procsim plume gaussian --help) for every hour and reports\n"
-    "per receptor the mean, 5th/50th/95th percentiles of the 24-h averages and the\n"
-    "probability that a 24-h average exceeds each threshold.  Realisations run in\n"
-    "parallel; realisation i draws from a stream seeded by (seed, i), so a seed\n"
-    "gives the same result on any number of threads.\n"
-    "\n"
-    "  -o DIR        output directory (default: results)\n"
-    "  --years N     number of synthetic years (overrides 'years')\n"
-    "  --seed S      random seed (overrides 'seed')\n"
-    "  --threads N   worker threads (default: all cores)\n"
-    "\n"
-    "CASE.yaml: the keys of a gaussian case (site, deposition, dispersion,\n"
-    "area_subdivisions, reduction, sources, receptors, output) and\n"
-    "  history: met_history.csv   hourly, columns as for gaussian; >= 1 year\n"
-    "  history_start: {day_of_year: 1, hour: 0}\n"
-    "  years: 50\n"
-    "  weighting: 0.5\n"
-    "  seed: 2001\n"
-    "  thresholds_ug_m3: [120, 150]\n"
-    "\n"
-    "Writes summary.csv, daily_<receptor>.csv and trend_<receptor>.png (annual\n"
-    "trend of mean and percentiles, as Figs 2-3 of the study), fits.csv,\n"
-    "wind_sectors.csv and synthetic_met_year1.csv.\n";
 
 const int kMonthDays[12] = {31, 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};
 
@@ -170,35 +142,17 @@ std::vector<MetHour> synthesiseYear(const Climate& c, double w, Stream& rng)
 int monteCarloMain(int argc, char** argv)
 {
     std::string casePath, outDir = "results";
-    long yearsOpt = 0, threadsOpt = 0;
-    bool haveSeed = false;
-    unsigned long long seedOpt = 0;
-    ArgReader args("montecarlo", argc, argv);
-    while (args.next())
-    {
-        const std::string& arg = args.arg();
-        if (isHelp(arg))
-        {
-            std::cout << kHelp;
-            return 0;
-        }
-        if (arg == "-o") outDir = args.value();
-        else if (arg == "--years") yearsOpt = args.positiveInteger();
-        else if (arg == "--threads") threadsOpt = args.positiveInteger();
-        else if (arg == "--seed")
-        {
-            seedOpt = static_cast<unsigned long long>(args.positiveInteger());
-            haveSeed = true;
-        }
-        else if (args.isOption()) throw args.unknown("plume montecarlo");
-        else if (casePath.empty()) casePath = arg;
-        else throw args.extraPositional();
-    }
-    if (casePath.empty())
-    {
-        std::cerr << kHelp;
-        return 2;
-    }
+    std::optional<long> yearsGiven, threadsGiven, seedGiven;
+    CommandLine cl("plume montecarlo", std::string(texts::help::montecarlo));
+    cl.input(casePath, "case file");
+    cl.text("-o", outDir);
+    cl.integer("--years", yearsGiven);
+    cl.integer("--threads", threadsGiven);
+    cl.integer("--seed", seedGiven);
+    if (!cl.parse(argc, argv)) return 0;
+    const long yearsOpt = yearsGiven.value_or(0), threadsOpt = threadsGiven.value_or(0);   // 0: the case's
+    const bool haveSeed = seedGiven.has_value();
+    const unsigned long long seedOpt = static_cast<unsigned long long>(seedGiven.value_or(0));
     const YamlInput in = YamlInput::load(casePath);
     std::vector<std::string> keys = gaussianSetupKeys();
     keys.insert(keys.end(), {"history", "history_start", "years", "weighting", "seed", "thresholds_ug_m3"});

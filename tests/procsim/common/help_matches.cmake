@@ -1,0 +1,20 @@
+# Runs procsim with ARGS and checks that it exits 0 and prints exactly the
+# help files FILES (joined by one blank line, as the commands join them).
+#   cmake -DPROCSIM=... "-DARGS=dryer;simulate;--help" "-DFILES=a.txt;b.txt" -P help_matches.cmake
+execute_process(COMMAND ${PROCSIM} ${ARGS} OUTPUT_VARIABLE out RESULT_VARIABLE status)
+set(expected "")
+set(first TRUE)
+foreach(f ${FILES})
+  file(READ ${f} text)
+  if(NOT first)
+    string(APPEND expected "\n")
+  endif()
+  string(APPEND expected "${text}")
+  set(first FALSE)
+endforeach()
+if(NOT status EQUAL 0)
+  message(FATAL_ERROR "procsim ${ARGS}: exit status ${status}")
+endif()
+if(NOT out STREQUAL expected)
+  message(FATAL_ERROR "procsim ${ARGS}: the help printed is not the text of ${FILES}")
+endif()
