@@ -219,7 +219,8 @@ DemCoupling::DemCoupling
                 << "time [s],particles,particle mass [kg],solid volume [m3],"
                 << "min voidfraction,"
                 << "particle drag x [N],particle drag y [N],particle drag z [N],"
-                << "gas exchange x [N],gas exchange y [N],gas exchange z [N]";
+                << "gas exchange x [N],gas exchange y [N],gas exchange z [N],"
+                << "gas received x [N],gas received y [N],gas received z [N]";
             if (heat_)
             {
                 *log_
@@ -246,6 +247,7 @@ DemCoupling::DemCoupling
     if (!resumed_)
     {
         exchange(vf_);
+        logGasMomentum();
         transferHeat();
         writeParticles();
     }
@@ -344,6 +346,15 @@ void DemCoupling::startDem()
         }
         dem_->setSlabs(cuts);
         locator_.addHalo(cuts, reach);
+        std::vector<double> halo(Foam::Pstream::nProcs(), 0.0);
+        halo[Foam::Pstream::myProcNo()] = double(locator_.nHaloCells());
+        sumOverRanks(halo.data(), halo.size());
+        Foam::Info<< "Parallel coupling: " << Foam::Pstream::nProcs()
+            << " x-slabs cut at";
+        for (std::size_t r = 1; r + 1 < cuts.size(); ++r) Foam::Info<< ' ' << cuts[r];
+        Foam::Info<< " m; halo cells per rank (reach " << reach << " m):";
+        for (const double h : halo) Foam::Info<< ' ' << label(h);
+        Foam::Info<< Foam::endl;
     }
     if (runTime.value() > 0)
     {
@@ -586,7 +597,26 @@ void DemCoupling::logStep(const VoidFractionResult& vf, const ExchangeResult& ex
     row << std::setprecision(10) << mesh_.time().value() << ','
         << nParticles << ',' << mass << ',' << sums[0] << ',' << epsMin;
     for (int k = 1; k < 7; ++k) row << ',' << sums[k];
-    logRow_ = row.str();
+    logRow_ = row.str();   // ends after the gas solve (logGasMomentum)
+}
+
+
+void DemCoupling::logGasMomentum()
+{
+    // What the discretised momentum equation took from the particles: its
+    // exchange term Ksl (Us - U) is implicit in U, so with the U just
+    // solved, not the U the particle drag was computed from.
+    Vec3 received;
+    forAll(Ksl_, celli)
+    {
+        const Foam::vector d = Ksl_[celli]*mesh_.V()[celli]*(U_[celli] - Us_[celli]);
+        received += Vec3{d.x(), d.y(), d.z()};
+    }
+    double sums[3] = {received.x, received.y, received.z};
+    sumOverRanks(sums, 3);
+    std::ostringstream row;
+    row << std::setprecision(10) << ',' << sums[0] << ',' << sums[1] << ',' << sums[2];
+    logRow_ += row.str();
     if (!heat_) endLogRow();   // with heat, the row ends after the gas energy
 }
 

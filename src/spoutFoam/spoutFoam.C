@@ -86,6 +86,8 @@ int main(int argc, char *argv[])
                 coupling.checkGas();
             }
 
+            coupling.logGasMomentum();
+
             // gas energy (eq 4) and the particles' heat, if the case has them
             coupling.solveEnergy();
 
