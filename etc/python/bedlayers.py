@@ -44,22 +44,25 @@ def void_fraction_model(path='constant/couplingProperties'):
 
 
 class Column:
-    """The layers of a one-cell-wide column mesh, from the cell centres and
-    volumes postProcess wrote into 0/C and 0/V (writeCellCentres,
-    writeCellVolumes): faces[k] .. faces[k + 1] is layer k, area the
-    cross-section."""
+    """The horizontal layers of cells of a column mesh, from the cell centres
+    and volumes postProcess wrote into 0/C and 0/V (writeCellCentres,
+    writeCellVolumes): faces[k] .. faces[k + 1] is layer k, volumes[k] the
+    volume of its cells, area the cross-section."""
 
     def __init__(self, case='.'):
         zc = np.array([c[2] for c in sc.read_field(os.path.join(case, '0', 'C'))])
         volumes = np.array(sc.read_field(os.path.join(case, '0', 'V')))
-        order = np.argsort(zc)
-        self.centres, self.volumes = zc[order], volumes[order]
+        # cells of one layer share their centre height (to round-off)
+        levels = np.unique(np.round(zc, 9))
+        layer = np.searchsorted(levels, np.round(zc, 9))
+        self.centres = levels
+        self.volumes = np.bincount(layer, weights=volumes, minlength=len(levels))
         dz = np.diff(self.centres)
         if len(dz) == 0 or np.max(np.abs(dz - dz[0])) > 1e-9 * dz[0]:
-            raise SystemExit('evaluate: 0/C: expected uniform layers, one cell across')
+            raise SystemExit('evaluate: 0/C: expected uniform horizontal layers of cells')
         self.dz = float(dz[0])
         bottom = self.centres[0] - self.dz / 2
-        self.faces = bottom + self.dz * np.arange(len(zc) + 1)
+        self.faces = bottom + self.dz * np.arange(len(levels) + 1)
         self.area = float(self.volumes[0]) / self.dz
 
     def layer_of(self, z):
