@@ -394,7 +394,9 @@ def run_spoutfoam(end, ranks, who):
         if not os.path.isdir('processor0'):
             subprocess.check_call(['bash', '-c', '. "$SPOUTLAB_DIR/etc/caseFunctions" '
                                    '&& decomposeSlabs %d' % ranks])
-        cmd = ['mpirun', '-np', str(ranks), 'spoutFoam', '-parallel']
+        cmd = (['mpirun', '-np', str(ranks)]
+               + os.environ.get('SPOUTLAB_MPIRUN_ARGS', '').split()
+               + ['spoutFoam', '-parallel'])
     else:
         cmd = ['spoutFoam']
     start = last_time('log.spoutFoam') or 0.0
