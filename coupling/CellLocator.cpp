@@ -4,6 +4,14 @@ namespace spoutlab {
 
 CellLocator::~CellLocator() = default;
 
+void CellLocator::findCells(const Vec3& centre, double radius, const std::vector<Vec3>& units,
+                            label centreCell, std::vector<label>& cells) const {
+  cells.resize(units.size());
+  for (std::size_t k = 0; k < units.size(); ++k) {
+    cells[k] = findCell(centre + units[k] * radius, centreCell);
+  }
+}
+
 void CellLocator::complete(std::vector<double>&, int) const {}
 
 void completeVectors(const CellLocator& mesh, std::vector<Vec3>& values) {

@@ -28,6 +28,13 @@ class CellLocator {
   // a conservative "false" is always allowed.
   virtual bool sphereInsideCell(label cell, const Vec3& centre, double radius) const = 0;
 
+  // The cells of the points centre + radius * units[k], each as findCell
+  // with the centre's cell as hint (the sample points of a divided
+  // particle). Meshes may skip the search for points that cannot have left
+  // the centre's cell; the answers must be findCell's.
+  virtual void findCells(const Vec3& centre, double radius, const std::vector<Vec3>& units,
+                         label centreCell, std::vector<label>& cells) const;
+
   // Parallel runs. The cells of neighbouring ranks that this rank's
   // particles reach (halo cells) are numbered after its own, and nCells()
   // counts both; findCell() and cellVolume() know them. complete() takes a

@@ -51,8 +51,9 @@ void DividedVoidFraction::distribute(const CellLocator& mesh, const Particle& p,
   // Count pieces per cell first and divide once, so the weights are exact
   // ratios count/N whose sum is 1 to round-off. A particle touches few cells,
   // so a linear search of row is the fastest lookup.
-  for (const Vec3& unit : samples_) {
-    label cell = mesh.findCell(p.x + unit * p.radius, centreCell);
+  thread_local std::vector<label> cells;   // reused: one call per particle and step
+  mesh.findCells(p.x, p.radius, samples_, centreCell, cells);
+  for (label cell : cells) {
     if (cell < 0) cell = centreCell;
     auto it = row.begin();
     while (it != row.end() && it->cell != cell) ++it;

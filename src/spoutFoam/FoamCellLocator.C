@@ -126,6 +126,38 @@ label FoamCellLocator::findCell(const Vec3& p, label hint) const
 }
 
 
+void FoamCellLocator::findCells
+(
+    const Vec3& x, double radius, const std::vector<Vec3>& units,
+    label centre, std::vector<label>& cells
+) const
+{
+    cells.resize(units.size());
+    constexpr std::size_t maxCut = 32;
+    std::size_t cut[maxCut];
+    std::size_t nCut = 0;
+    bool fast = centre >= 0 && centre < mesh_.nCells();
+    for (std::size_t k = planeStart_[fast ? centre : 0]; fast && k < planeStart_[centre + 1]; ++k)
+    {
+        const Plane& f = planes_[k];
+        if (f.d - (f.nx*x.x + f.ny*x.y + f.nz*x.z) >= radius) continue;
+        if (nCut == maxCut) fast = false;
+        else cut[nCut++] = k;
+    }
+    for (std::size_t i = 0; i < units.size(); ++i)
+    {
+        const Vec3 p = x + units[i]*radius;
+        bool inCentre = fast;
+        for (std::size_t j = 0; inCentre && j < nCut; ++j)
+        {
+            const Plane& f = planes_[cut[j]];
+            inCentre = f.nx*p.x + f.ny*p.y + f.nz*p.z <= f.d;
+        }
+        cells[i] = inCentre ? centre : findCell(p, centre);
+    }
+}
+
+
 label FoamCellLocator::findHalo(const Vec3& p) const
 {
     if

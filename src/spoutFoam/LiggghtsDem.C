@@ -271,18 +271,38 @@ void LiggghtsDem::localParticles(std::vector<Particle>& particles)
 
     // In id order, so each particle keeps its place (and its cell hint)
     // from step to step whatever order LIGGGHTS keeps its atoms in (it
-    // sorts them, and atoms move between ranks at re-neighbouring).
-    std::vector<std::pair<long, int>> order(std::size_t(atom->nlocal));
-    for (int i = 0; i < atom->nlocal; ++i) order[std::size_t(i)] = {long(atom->tag[i]), i};
-    std::sort(order.begin(), order.end());
+    // sorts them, and atoms move between ranks at re-neighbouring).  Ids run
+    // from 1 to the number ever inserted: while this rank holds a good share
+    // of them, placing each atom by its id is linear; on many ranks the ids
+    // are sorted instead, so nothing scales with the total count.
+    const int nLocal = atom->nlocal;
+    int maxId = 0;
+    for (int i = 0; i < nLocal; ++i) maxId = std::max(maxId, int(atom->tag[i]));
+    std::vector<int> order;
+    order.reserve(std::size_t(nLocal));
+    if (maxId < 4*nLocal + 64)
+    {
+        std::vector<int> atomOf(std::size_t(maxId) + 1, -1);
+        for (int i = 0; i < nLocal; ++i) atomOf[std::size_t(atom->tag[i])] = i;
+        for (const int i : atomOf) if (i >= 0) order.push_back(i);
+    }
+    else
+    {
+        for (int i = 0; i < nLocal; ++i) order.push_back(i);
+        std::sort
+        (
+            order.begin(), order.end(),
+            [atom](int a, int b) { return atom->tag[a] < atom->tag[b]; }
+        );
+    }
 
     particles.resize(order.size());
     localIds_.resize(order.size());
     for (std::size_t k = 0; k < order.size(); ++k)
     {
-        const int i = order[k].second;
+        const int i = order[k];
         Particle& p = particles[k];
-        p.id = order[k].first;
+        p.id = atom->tag[i];
         p.x = Vec3{atom->x[i][0], atom->x[i][1], atom->x[i][2]};
         p.v = Vec3{atom->v[i][0], atom->v[i][1], atom->v[i][2]};
         p.radius = atom->radius[i];
