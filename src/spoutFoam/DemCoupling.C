@@ -133,6 +133,7 @@ DemCoupling::DemCoupling
     deleteLost_(false),
     maxCo_(dict_.getOrDefault<Foam::scalar>("maxCo", 1.0)),
     lastWritten_(mesh.time().timeName()),
+    startIndex_(mesh.time().timeIndex()),
     locator_(mesh),
     vtk_(mesh.time().globalPath()/"particles", "particles"),
     Ksl_
@@ -870,6 +871,21 @@ void DemCoupling::writeParticles()
 void DemCoupling::finish()
 {
     if (log_) log_->flush();
+    if (!Foam::Pstream::parRun()) return;
+    // what the neighbour exchange cost, per rank and step (benchmarks)
+    const Foam::label nProcs = Foam::Pstream::nProcs();
+    const double steps = std::max(1.0, double(mesh_.time().timeIndex() - startIndex_));
+    std::vector<double> messages(nProcs, 0.0), bytes(nProcs, 0.0);
+    messages[Foam::Pstream::myProcNo()] = locator_.traffic().messages/steps;
+    bytes[Foam::Pstream::myProcNo()] = locator_.traffic().bytes/steps;
+    sumOverRanks(messages.data(), messages.size());
+    sumOverRanks(bytes.data(), bytes.size());
+    Foam::Info<< "Halo exchange per step, by rank (messages, kB):";
+    for (Foam::label r = 0; r < nProcs; ++r)
+    {
+        Foam::Info<< " (" << messages[r] << ", " << bytes[r]/1024 << ")";
+    }
+    Foam::Info<< Foam::endl;
 }
 
 } // namespace spoutlab

@@ -392,6 +392,12 @@ void FoamCellLocator::exchange
     swap(ranks, out, in);
     for (int s = 0; s < 2; ++s)
     {
+        if (ranks[s] < 0) continue;
+        traffic_.messages += 1;
+        traffic_.bytes += double(out[s].size()*sizeof(double));
+    }
+    for (int s = 0; s < 2; ++s)
+    {
         const Side& side = sides_[s];
         if (reverse)
         {
