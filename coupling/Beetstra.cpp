@@ -4,6 +4,9 @@
 
 namespace spoutlab {
 
+// selected by "dragModel Beetstra;"
+const Registration<DragModel, Beetstra> registeredBeetstra("Beetstra");
+
 namespace {
 
 // The inertial term with numerator and denominator multiplied by Re^a,

@@ -2,6 +2,9 @@
 
 namespace spoutlab {
 
+// selected by "voidFractionModel centre;"
+const Registration<VoidFractionModel, CentreVoidFraction> registeredCentreVoidFraction("centre");
+
 CentreVoidFraction::CentreVoidFraction(const Parameters& props) : VoidFractionModel(props) {}
 
 void CentreVoidFraction::distribute(const CellLocator&, const Particle&, label centreCell,

@@ -4,6 +4,9 @@
 
 namespace spoutlab {
 
+// selected by "dragModel DiFelice;"
+const Registration<DragModel, DiFelice> registeredDiFelice("DiFelice");
+
 namespace {
 
 // C_d |w| = (0.63 sqrt|w| + 4.8 sqrt(mu/(eps rho d)))^2 is C_d times the slip

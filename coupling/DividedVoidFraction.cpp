@@ -6,6 +6,9 @@
 
 namespace spoutlab {
 
+// selected by "voidFractionModel divided;"
+const Registration<VoidFractionModel, DividedVoidFraction> registeredDividedVoidFraction("divided");
+
 namespace {
 
 // Rodrigues' rotation of v about the unit axis k by angle theta.

@@ -10,6 +10,7 @@
 // own packed-bed limit); as eps -> 1 the force on one particle must become the
 // single-sphere drag C_d (pi d^2/4) rho w^2/2.
 
+#include "ModelRegistry.hpp"
 #include "Parameters.hpp"
 
 #include <memory>
@@ -42,7 +43,9 @@ class DragModel {
   virtual double beta(const DragState& state, const GasProperties& gas) const = 0;
   virtual std::string name() const = 0;
 
-  // Run-time selection by name (the couplingProperties entry "dragModel").
+  // Run-time selection by name (the couplingProperties entry "dragModel"); a
+  // law joins the registry from its own .cpp (ModelRegistry.hpp).
+  static ModelRegistry<DragModel>& registry();
   static std::unique_ptr<DragModel> New(const std::string& typeName, const Parameters& props);
   static std::vector<std::string> available();
 };

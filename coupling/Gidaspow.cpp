@@ -4,6 +4,9 @@
 
 namespace spoutlab {
 
+// selected by "dragModel Gidaspow;"
+const Registration<DragModel, Gidaspow> registeredGidaspow("Gidaspow");
+
 namespace {
 
 double ergun(const DragState& s, const GasProperties& gas) {

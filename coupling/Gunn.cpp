@@ -4,6 +4,9 @@
 
 namespace spoutlab {
 
+// selected by "heatTransferModel Gunn;"
+const Registration<HeatTransferModel, Gunn> registeredGunn("Gunn");
+
 Gunn::Gunn(const Parameters&) {}
 
 double Gunn::h(const HeatTransferCell& cell, const GasThermalProperties& gas) const {

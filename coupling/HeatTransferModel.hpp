@@ -12,6 +12,7 @@
 // Run-time selection by name, the couplingProperties entry "heatTransferModel",
 // with settings in "<name>Props".
 
+#include "ModelRegistry.hpp"
 #include "Parameters.hpp"
 #include "Vec3.hpp"
 
@@ -57,6 +58,8 @@ class HeatTransferModel {
 
   virtual std::string name() const = 0;
 
+  // Run-time selection; a correlation joins the registry from its own .cpp.
+  static ModelRegistry<HeatTransferModel>& registry();
   static std::unique_ptr<HeatTransferModel> New(const std::string& typeName,
                                                 const Parameters& props);
   static std::vector<std::string> available();

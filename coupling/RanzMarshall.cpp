@@ -4,6 +4,9 @@
 
 namespace spoutlab {
 
+// selected by "heatTransferModel RanzMarshall;"
+const Registration<HeatTransferModel, RanzMarshall> registeredRanzMarshall("RanzMarshall");
+
 RanzMarshall::RanzMarshall(const Parameters&) {}
 
 double RanzMarshall::h(const HeatTransferCell& cell, const GasThermalProperties& gas) const {

@@ -4,6 +4,9 @@
 
 namespace spoutlab {
 
+// selected by "heatTransferModel Sartori;"
+const Registration<HeatTransferModel, Sartori> registeredSartori("Sartori");
+
 Sartori::Sartori(const Parameters&) {}
 
 double Sartori::h(const HeatTransferCell& cell, const GasThermalProperties& gas) const {

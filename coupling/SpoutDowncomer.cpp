@@ -4,6 +4,9 @@
 
 namespace spoutlab {
 
+// selected by "heatTransferModel spoutDowncomer;"
+const Registration<HeatTransferModel, SpoutDowncomer> registeredSpoutDowncomer("spoutDowncomer");
+
 namespace {
 
 // The sub-model named by `key`. Checked here rather than left to New so that a

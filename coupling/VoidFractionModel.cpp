@@ -1,25 +1,8 @@
 #include "VoidFractionModel.hpp"
 
-#include "CentreVoidFraction.hpp"
-#include "DividedVoidFraction.hpp"
-#include "ModelTable.hpp"
-
 #include <algorithm>
 
 namespace spoutlab {
-
-namespace {
-
-const ModelTable<VoidFractionModel>& voidFractionTable() {
-  using T = ModelTable<VoidFractionModel>;
-  static const T table("voidFractionModel", {
-      T::entry<DividedVoidFraction>("divided"),
-      T::entry<CentreVoidFraction>("centre"),
-  });
-  return table;
-}
-
-}  // namespace
 
 ParticleCellMap::Row ParticleCellMap::cells(std::size_t particle) const {
   const CellWeight* base = entries_.data();
@@ -87,11 +70,17 @@ VoidFractionResult VoidFractionModel::compute(const CellLocator& mesh,
   return result;
 }
 
-std::vector<std::string> VoidFractionModel::available() { return voidFractionTable().names(); }
+// Built on first use, before any model's registration object adds to it.
+ModelRegistry<VoidFractionModel>& VoidFractionModel::registry() {
+  static ModelRegistry<VoidFractionModel> models("voidFractionModel");
+  return models;
+}
+
+std::vector<std::string> VoidFractionModel::available() { return registry().names(); }
 
 std::unique_ptr<VoidFractionModel> VoidFractionModel::New(const std::string& typeName,
                                                           const Parameters& props) {
-  return voidFractionTable().create(typeName, props);
+  return registry().create(typeName, props);
 }
 
 }  // namespace spoutlab

@@ -9,6 +9,7 @@
 //   voidFractionMin   lower bound on eps used by the drag (default 0.3)
 
 #include "CellLocator.hpp"
+#include "ModelRegistry.hpp"
 #include "Parameters.hpp"
 #include "Particle.hpp"
 
@@ -79,7 +80,9 @@ class VoidFractionModel {
   std::vector<double> voidFraction(const CellLocator& mesh,
                                    const std::vector<double>& solidVolume) const;
 
-  // Run-time selection by name (the couplingProperties entry "voidFractionModel").
+  // Run-time selection by name (the couplingProperties entry "voidFractionModel");
+  // a model joins the registry from its own .cpp (ModelRegistry.hpp).
+  static ModelRegistry<VoidFractionModel>& registry();
   static std::unique_ptr<VoidFractionModel> New(const std::string& typeName,
                                                 const Parameters& props);
   static std::vector<std::string> available();

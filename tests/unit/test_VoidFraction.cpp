@@ -267,13 +267,16 @@ TEST(VoidFraction, ClippedOnlyBelowTheMinimum) {
 }
 
 TEST(VoidFraction, SelectionAndInputErrors) {
+  EXPECT_EQ(VoidFractionModel::available(), (std::vector<std::string>{"centre", "divided"}));
   EXPECT_EQ(make("divided")->name(), "divided");
   EXPECT_EQ(make("centre")->name(), "centre");
   try {
     make("bigParticle");
     FAIL() << "no InputError";
   } catch (const InputError& e) {
-    EXPECT_STREQ(e.what(), "voidFractionModel 'bigParticle' unknown; expected one of: divided, centre");
+    EXPECT_STREQ(e.what(),
+                 "couplingProperties: key 'voidFractionModel' expected one of centre, divided, got "
+                 "'bigParticle'");
   }
   Parameters zero("couplingProperties/dividedProps");
   zero.set("nShells", "0");
