@@ -177,7 +177,6 @@ DemCoupling::DemCoupling
     deleteLost_ = (lost == "delete");
 
     const Foam::word dragName = dict_.get<Foam::word>("dragModel");
-    requireKnown("dragModel", dragName, DragModel::available());
     exchange_.reset
     (
         new MomentumExchange
@@ -186,7 +185,6 @@ DemCoupling::DemCoupling
         )
     );
     const Foam::word vfName = dict_.get<Foam::word>("voidFractionModel");
-    requireKnown("voidFractionModel", vfName, VoidFractionModel::available());
     voidFractionModel_ =
         VoidFractionModel::New(vfName, toParameters(dict_, vfName + "Props"));
 
@@ -418,7 +416,8 @@ void DemCoupling::startHeat
     const Foam::word model =
         dict_.getOrDefault<Foam::word>("heatTransferModel", "none");
     if (model == "none") return;
-    requireKnown("heatTransferModel", model, HeatTransferModel::available());
+    // a bad name before what LIGGGHTS lacks for heat: the name is fixed first
+    HeatTransferModel::registry().require(model, "constant/couplingProperties");
     if (!dem_->hasHeat())
     {
         throw InputError

@@ -3,10 +3,7 @@
 \*---------------------------------------------------------------------------*/
 #include "FoamParameters.H"
 
-#include "InputError.hpp"
 #include "OStringStream.H"
-
-#include <algorithm>
 
 namespace spoutlab
 {
@@ -40,25 +37,6 @@ Parameters toParameters(const Foam::dictionary& parent, const Foam::word& name)
         params.set(e.keyword(), value);
     }
     return params;
-}
-
-
-// A run-time selected model name must be one the library knows.
-void requireKnown
-(
-    const std::string& key,
-    const std::string& name,
-    const std::vector<std::string>& known
-)
-{
-    if (std::find(known.begin(), known.end(), name) != known.end()) return;
-    std::string list;
-    for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
-    throw InputError
-    (
-        "constant/couplingProperties: key '" + key + "' expected one of "
-      + list + ", got '" + name + "'"
-    );
 }
 
 

@@ -23,6 +23,7 @@ Description
 
 #include "DemCoupling.H"
 #include "InputError.hpp"
+#include "ModelFamilies.hpp"
 
 #include <mpi.h>
 
@@ -37,9 +38,30 @@ int main(int argc, char *argv[])
         " in-process LIGGGHTS; see constant/couplingProperties"
     );
 
+    // the names each run-time selection accepts, from the models' registries
+    argList::addBoolOption
+    (
+        "listModels",
+        "List the names dragModel, voidFractionModel and heatTransferModel"
+        " accept, one family a line, and exit"
+    );
+    argList::addNote("");
+    for (const spoutlab::ModelFamily& family : spoutlab::modelFamilies())
+    {
+        argList::addNote(family.key + ": " + family.names);
+    }
+
     #include "postProcess.H"
 
     #include "setRootCaseLists.H"
+    if (args.found("listModels"))
+    {
+        for (const spoutlab::ModelFamily& family : spoutlab::modelFamilies())
+        {
+            Info<< family.key.c_str() << ": " << family.names.c_str() << nl;
+        }
+        return 0;
+    }
     #include "createTime.H"
     #include "createMesh.H"
 

@@ -5,6 +5,7 @@
 // settings reach the model.
 
 #include "InputError.hpp"
+#include "ModelFamilies.hpp"
 #include "ModelRegistry.hpp"
 #include "Parameters.hpp"
 
@@ -108,4 +109,17 @@ TEST(ModelRegistry, ANameRegisteredTwiceIsAProgrammingError) {
                }),
                std::logic_error);
   EXPECT_EQ(local.names(), std::vector<std::string>{"square"});
+}
+
+// What spoutFoam -listModels prints: each family once, under the key that
+// selects it, with the names its errors list.
+TEST(ModelFamilies, EveryFamilyWithItsKeyAndNames) {
+  const auto families = modelFamilies();
+  ASSERT_EQ(families.size(), 3u);
+  EXPECT_EQ(families[0].key, "dragModel");
+  EXPECT_EQ(families[0].names, "Beetstra, DiFelice, Gidaspow");
+  EXPECT_EQ(families[1].key, "voidFractionModel");
+  EXPECT_EQ(families[1].names, "centre, divided");
+  EXPECT_EQ(families[2].key, "heatTransferModel");
+  EXPECT_EQ(families[2].names, "Gunn, RanzMarshall, Sartori, spoutDowncomer");
 }

@@ -1,0 +1,23 @@
+#include "ModelFamilies.hpp"
+
+#include "DragModel.hpp"
+#include "HeatTransferModel.hpp"
+#include "VoidFractionModel.hpp"
+
+namespace spoutlab {
+
+namespace {
+
+template <class Base>
+ModelFamily familyOf() {
+  const ModelRegistry<Base>& registry = Base::registry();
+  return {registry.key(), registry.namesList()};
+}
+
+}  // namespace
+
+std::vector<ModelFamily> modelFamilies() {
+  return {familyOf<DragModel>(), familyOf<VoidFractionModel>(), familyOf<HeatTransferModel>()};
+}
+
+}  // namespace spoutlab
