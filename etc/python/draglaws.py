@@ -146,5 +146,5 @@ def from_coupling_properties(path='constant/couplingProperties'):
         return DiFelice()
     if name == 'Beetstra':
         return Beetstra()
-    raise SystemExit("%s: key 'dragModel' expected one of Gidaspow, DiFelice, Beetstra, got '%s'"
+    raise SystemExit("%s: key 'dragModel' expected one of Beetstra, DiFelice, Gidaspow, got '%s'"
                      % (path, name))
