@@ -4,10 +4,22 @@
 #include "ParticleVtkSeries.H"
 
 #include <algorithm>
+#include <array>
 #include <filesystem>
 #include <fstream>
-#include <iomanip>
-#include <utility>
+#include <functional>
+
+#include <vtkCellArray.h>
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkFloatArray.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkTypeInt64Array.h>
+
+#include "VtkXmlFile.hpp"
 
 namespace spoutlab
 {
@@ -15,20 +27,75 @@ namespace spoutlab
 namespace
 {
 
-template<class Get>
-void writeVectorArray
+// A per-particle vector; a shorter list (a rank that sent none) reads as zero
+vtkSmartPointer<vtkFloatArray> vectorArray
 (
-    std::ofstream& os, const char* name, std::size_t n, Get get
+    const std::string& name, const std::vector<Vec3>& v, std::size_t n
 )
 {
-    os << "        <DataArray type=\"Float64\" Name=\"" << name
-       << "\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+    auto a = vtkxml::floatArray(name, 3, n);
     for (std::size_t i = 0; i < n; ++i)
     {
-        const Vec3 v = get(i);
-        os << ' ' << v.x << ' ' << v.y << ' ' << v.z << '\n';
+        const Vec3 x = i < v.size() ? v[i] : Vec3{};
+        a->SetTypedTuple(static_cast<vtkIdType>(i), std::array<float, 3>{
+            float(x.x), float(x.y), float(x.z)}.data());
     }
-    os << "        </DataArray>\n";
+    return a;
+}
+
+
+vtkSmartPointer<vtkFloatArray> scalarArray
+(
+    const std::string& name, const std::vector<double>& v, std::size_t n
+)
+{
+    auto a = vtkxml::floatArray(name, 1, n);
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        a->SetValue(static_cast<vtkIdType>(i), float(i < v.size() ? v[i] : 0.0));
+    }
+    return a;
+}
+
+
+// Where the particles are and how big: geometry stays in double, so volumes
+// and cell membership computed from the file are those of the run
+void addGeometry(vtkPolyData& poly, const std::vector<Particle>& particles)
+{
+    const std::size_t n = particles.size();
+    auto x = vtkxml::doubleArray("position", 3, n);
+    auto radius = vtkxml::doubleArray("radius", 1, n);
+    vtkNew<vtkTypeInt64Array> id;
+    id->SetName("id");
+    id->SetNumberOfTuples(static_cast<vtkIdType>(n));
+    vtkNew<vtkCellArray> verts;   // one vertex cell each: ParaView draws them
+    verts->AllocateExact(static_cast<vtkIdType>(n), static_cast<vtkIdType>(n));
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        const Particle& p = particles[i];
+        const auto k = static_cast<vtkIdType>(i);
+        x->SetTuple3(k, p.x.x, p.x.y, p.x.z);
+        radius->SetValue(k, p.radius);
+        id->SetValue(k, p.id);
+        verts->InsertNextCell(1, &k);
+    }
+    vtkNew<vtkPoints> points;
+    points->SetData(x);
+    poly.SetPoints(points);
+    poly.SetVerts(verts);
+    poly.GetPointData()->AddArray(id);
+    poly.GetPointData()->SetScalars(radius);
+}
+
+// Write to a temporary name first: an interrupted run never leaves a
+// truncated file that ParaView would choke on
+void writeReplacing
+(
+    const std::string& path, const std::function<void(const std::string&)>& writeTo
+)
+{
+    writeTo(path + ".tmp");
+    std::filesystem::rename(path + ".tmp", path);
 }
 
 } // namespace
@@ -54,66 +121,33 @@ void ParticleVtkSeries::write
     const std::vector<std::pair<std::string, std::vector<double>>>& scalars
 ) const
 {
-    std::filesystem::create_directories(directory_);
-    const std::string file = directory_ + "/" + name_ + "_" + timeName + ".vtp";
     const std::size_t n = particles.size();
+    vtkNew<vtkPolyData> poly;
+    addGeometry(*poly, particles);
 
-    // write to a temporary name first: an interrupted run never leaves a
-    // truncated file that ParaView would choke on
+    std::vector<Vec3> v(n);
+    std::transform(particles.begin(), particles.end(), v.begin(), [](const Particle& p) { return p.v; });
+    poly->GetPointData()->SetVectors(vectorArray("velocity", v, n));
+    for (const auto& [name, values] : vectors)
     {
-        std::ofstream os(file + ".tmp");
-        os << std::setprecision(9);
-        os << "<?xml version=\"1.0\"?>\n"
-           << "<VTKFile type=\"PolyData\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-           << "  <PolyData>\n"
-           << "    <FieldData>\n"
-           << "      <DataArray type=\"Float64\" Name=\"TimeValue\" NumberOfTuples=\"1\" format=\"ascii\"> "
-           << time << " </DataArray>\n"
-           << "    </FieldData>\n"
-           << "    <Piece NumberOfPoints=\"" << n << "\" NumberOfVerts=\"" << n
-           << "\" NumberOfLines=\"0\" NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n"
-           << "      <Points>\n";
-        writeVectorArray(os, "position", n, [&](std::size_t i) { return particles[i].x; });
-        os << "      </Points>\n"
-           << "      <PointData Scalars=\"radius\" Vectors=\"velocity\">\n"
-           << "        <DataArray type=\"Int64\" Name=\"id\" format=\"ascii\">\n";
-        for (const auto& p : particles) os << ' ' << p.id << '\n';
-        os << "        </DataArray>\n"
-           << "        <DataArray type=\"Float64\" Name=\"radius\" format=\"ascii\">\n";
-        for (const auto& p : particles) os << ' ' << p.radius << '\n';
-        os << "        </DataArray>\n";
-        writeVectorArray(os, "velocity", n, [&](std::size_t i) { return particles[i].v; });
-        for (const auto& named : vectors)
-        {
-            const std::vector<Vec3>& v = named.second;
-            writeVectorArray
-            (
-                os, named.first.c_str(), n,
-                [&](std::size_t i) { return i < v.size() ? v[i] : Vec3{}; }
-            );
-        }
-        for (const auto& named : scalars)
-        {
-            const std::vector<double>& v = named.second;
-            os << "        <DataArray type=\"Float64\" Name=\"" << named.first
-               << "\" format=\"ascii\">\n";
-            for (std::size_t i = 0; i < n; ++i) os << ' ' << (i < v.size() ? v[i] : 0.0) << '\n';
-            os << "        </DataArray>\n";
-        }
-        os << "      </PointData>\n"
-           << "      <Verts>\n"
-           << "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
-        for (std::size_t i = 0; i < n; ++i) os << ' ' << i << '\n';
-        os << "        </DataArray>\n"
-           << "        <DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
-        for (std::size_t i = 0; i < n; ++i) os << ' ' << i + 1 << '\n';
-        os << "        </DataArray>\n"
-           << "      </Verts>\n"
-           << "    </Piece>\n"
-           << "  </PolyData>\n"
-           << "</VTKFile>\n";
+        poly->GetPointData()->AddArray(vectorArray(name, values, n));
     }
-    std::filesystem::rename(file + ".tmp", file);
+    for (const auto& [name, values] : scalars)
+    {
+        poly->GetPointData()->AddArray(scalarArray(name, values, n));
+    }
+
+    // ParaView shows the simulation time of a file opened on its own
+    auto timeValue = vtkxml::doubleArray("TimeValue", 1, 1);
+    timeValue->SetValue(0, time);
+    poly->GetFieldData()->AddArray(timeValue);
+
+    std::filesystem::create_directories(directory_);
+    writeReplacing
+    (
+        directory_ + "/" + name_ + "_" + timeName + ".vtp",
+        [&](const std::string& file) { vtkxml::write(poly, file); }
+    );
     writeCollection();
 }
 
@@ -121,7 +155,7 @@ void ParticleVtkSeries::write
 void ParticleVtkSeries::writeCollection() const
 {
     // every <name>_<time>.vtp on disk, ordered by time
-    std::vector<std::pair<double, std::string>> steps;
+    vtkxml::CollectionEntries steps;
     const std::string prefix = name_ + "_";
     for (const auto& entry : std::filesystem::directory_iterator(directory_))
     {
@@ -133,22 +167,11 @@ void ParticleVtkSeries::writeCollection() const
         catch (const std::exception&) {}
     }
     std::sort(steps.begin(), steps.end());
-
-    const std::string pvd = directory_ + "/" + name_ + ".pvd";
-    {
-        std::ofstream os(pvd + ".tmp");
-        os << std::setprecision(12)
-           << "<?xml version=\"1.0\"?>\n"
-           << "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-           << "  <Collection>\n";
-        for (const auto& s : steps)
-        {
-            os << "    <DataSet timestep=\"" << s.first
-               << "\" group=\"\" part=\"0\" file=\"" << s.second << "\"/>\n";
-        }
-        os << "  </Collection>\n</VTKFile>\n";
-    }
-    std::filesystem::rename(pvd + ".tmp", pvd);
+    writeReplacing
+    (
+        directory_ + "/" + name_ + ".pvd",
+        [&](const std::string& file) { std::ofstream(file) << vtkxml::collection(steps); }
+    );
 }
 
 } // namespace spoutlab
