@@ -197,18 +197,22 @@ def write_labelled(source, target, ids, labels_by_split):
     """A copy of the particle file `source` with one Int8 array per split,
     `label_<split>` (1 = A, 0 = B, -1 = not in the first file), added to its
     point data: colour by it in ParaView."""
-    with open(source) as f:
-        text = f.read()
+    with open(source, 'rb') as f:
+        data = f.read()
     arrays = ''
     for split, labels in labels_by_split.items():
         values = '\n'.join(' %d' % labels.get(i, -1) for i in ids)
         arrays += ('        <DataArray type="Int8" Name="label_%s" format="ascii">\n%s\n'
                    '        </DataArray>\n' % (split, values))
-    head, sep, tail = text.rpartition('      </PointData>')
-    if not sep:
+    # the arrays go into the XML header; appended binary data after it keeps
+    # its offsets, which count from the start of <AppendedData>
+    appended = data.find(b'<AppendedData')
+    header = data if appended < 0 else data[:appended]
+    end = header.rfind(b'</PointData>')
+    if end < 0:
         raise ValueError('%s: no <PointData> section' % source)
-    with open(target + '.tmp', 'w') as f:
-        f.write(head + arrays + sep + tail)
+    with open(target + '.tmp', 'wb') as f:
+        f.write(data[:end] + arrays.encode() + data[end:])
     os.replace(target + '.tmp', target)
 
 

@@ -7,8 +7,11 @@ import csv
 import math
 import os
 import re
+import struct
 import subprocess
 import sys
+import xml.etree.ElementTree as ET
+import zlib
 
 
 def read_dat(path):
@@ -64,18 +67,100 @@ def read_coupling_log(case):
     return rows
 
 
+# --- VTK XML files (.vtp, .vts) ------------------------------------------------
+# spoutFoam writes binary appended data: the XML header, then after
+# <AppendedData encoding="raw"> and a '_' the arrays, each at its `offset`.
+# An array is [byte count][bytes] uncompressed, or with a compressor
+# [blocks][block size][last block size][compressed size of each block] and
+# the zlib streams.  The header integers are `header_type` (UInt32 unless
+# said).  Inline ASCII arrays (mixing.py adds those) are read as well.
+# Standard library only: several case scripts run without numpy.
+
+VTK_TYPES = {'Int8': 'b', 'UInt8': 'B', 'Int16': 'h', 'UInt16': 'H', 'Int32': 'i',
+             'UInt32': 'I', 'Int64': 'q', 'UInt64': 'Q', 'Float32': 'f', 'Float64': 'd'}
+
+
+class VtkXmlFile:
+    """The arrays of one VTK XML file, as flat lists (components interleaved)."""
+
+    def __init__(self, path):
+        self.path = path
+        with open(path, 'rb') as f:
+            data = f.read()
+        start = data.find(b'<AppendedData')
+        self.appended = None
+        if start >= 0:
+            tag = re.compile(rb'<AppendedData\s+encoding="(\w+)"\s*>\s*_').match(data, start)
+            if not tag or tag.group(1) != b'raw':
+                raise ValueError('%s: <AppendedData>: expected encoding="raw" followed by "_"' % path)
+            self.appended = memoryview(data)[tag.end():]
+            data = data[:start] + b'</VTKFile>'
+        try:
+            self.root = ET.fromstring(data)
+        except ET.ParseError as e:
+            raise ValueError('%s: not a VTK XML file (%s)' % (path, e))
+        a = self.root.attrib
+        self.order = '>' if a.get('byte_order') == 'BigEndian' else '<'
+        self.header = VTK_TYPES[a.get('header_type', 'UInt32')]
+        self.compressor = a.get('compressor')
+        if self.compressor not in (None, 'vtkZLibDataCompressor'):
+            raise ValueError('%s: compressor %s: expected vtkZLibDataCompressor or none'
+                             % (path, self.compressor))
+
+    def points(self):
+        """[(x, y, z)] of the <Points> array."""
+        element = self.root.find('.//Points/DataArray')
+        if element is None:
+            raise ValueError('%s: no <Points> array' % self.path)
+        v = self.values(element)
+        return list(zip(v[0::3], v[1::3], v[2::3]))
+
+    def array(self, name):
+        for element in self.root.iter('DataArray'):
+            if element.get('Name') == name:
+                return self.values(element)
+        raise KeyError('%s: no array named %s' % (self.path, name))
+
+    def values(self, element):
+        name, kind, form = element.get('Name'), element.get('type'), element.get('format')
+        if kind not in VTK_TYPES:
+            raise ValueError('%s: array %s: type %s: expected a numeric VTK type'
+                             % (self.path, name, kind))
+        if form == 'ascii':
+            cast = float if kind.startswith('Float') else int
+            return [cast(x) for x in (element.text or '').split()]
+        if form == 'appended' and self.appended is not None:
+            raw = self.appended_bytes(int(element.get('offset')))
+            code = VTK_TYPES[kind]
+            return list(struct.unpack('%s%d%s' % (self.order, len(raw) // struct.calcsize(code), code),
+                                      raw))
+        raise ValueError('%s: array %s: format %s: expected ascii or raw appended'
+                         % (self.path, name, form))
+
+    def appended_bytes(self, offset):
+        word = struct.calcsize(self.header)
+        def ints(at, n):
+            return struct.unpack_from('%s%d%s' % (self.order, n, self.header), self.appended, at)
+        if self.compressor is None:
+            size = ints(offset, 1)[0]
+            return bytes(self.appended[offset + word:offset + word + size])
+        blocks = ints(offset, 1)[0]
+        at = offset + (3 + blocks) * word
+        out = []
+        for size in ints(offset + 3 * word, blocks):
+            out.append(zlib.decompress(self.appended[at:at + size]))
+            at += size
+        return b''.join(out)
+
+
 def read_vtp_points(path):
-    """Particle positions from a spoutFoam .vtp file (ASCII)."""
-    text = open(path).read()
-    block = re.search(r'<Points>.*?>(.*?)</DataArray>', text, re.S).group(1)
-    values = [float(x) for x in block.split()]
-    return [tuple(values[i:i + 3]) for i in range(0, len(values), 3)]
+    """Particle positions from a spoutFoam .vtp file, as [(x, y, z)]."""
+    return VtkXmlFile(path).points()
 
 
 def read_vtp_array(path, name):
-    text = open(path).read()
-    m = re.search(r'Name="%s"[^>]*>(.*?)</DataArray>' % re.escape(name), text, re.S)
-    return [float(x) for x in m.group(1).split()]
+    """One point array of a .vtp file as a flat list (components interleaved)."""
+    return VtkXmlFile(path).array(name)
 
 
 def plot(png, script, size=(900, 600)):
