@@ -1,8 +1,17 @@
 #include "plume/Vtk.hpp"
 
 #include <algorithm>
-#include <iomanip>
+#include <cstdio>
+#include <stdexcept>
 
+#include <vtkCellData.h>
+#include <vtkDoubleArray.h>
+#include <vtkFloatArray.h>
+#include <vtkNew.h>
+#include <vtkPoints.h>
+#include <vtkStructuredGrid.h>
+
+#include "VtkXmlFile.hpp"
 #include "common/Cli.hpp"
 #include "common/Csv.hpp"
 #include "plume/Eulerian.hpp"
@@ -10,60 +19,80 @@
 namespace procsim::plume
 {
 
+namespace
+{
+
+// Terrain at the column corners: the mean of the columns that share the corner
+std::vector<double> cornerTerrain(const TerrainGrid& g)
+{
+    std::vector<double> h(static_cast<std::size_t>(g.nx + 1) * (g.ny + 1));
+    for (int j = 0; j <= g.ny; ++j)
+        for (int i = 0; i <= g.nx; ++i)
+        {
+            double sum = 0;
+            int n = 0;
+            for (int jj = std::max(j - 1, 0); jj <= std::min(j, g.ny - 1); ++jj)
+                for (int ii = std::max(i - 1, 0); ii <= std::min(i, g.nx - 1); ++ii)
+                {
+                    sum += g.hc[g.col(ii, jj)];
+                    ++n;
+                }
+            h[static_cast<std::size_t>(j) * (g.nx + 1) + i] = sum / n;
+        }
+    return h;
+}
+
+// The terrain-following cell corners: level k sits at the fraction fFace[k]
+// of the way from the ground to the lid
+vtkSmartPointer<vtkPoints> cornerPoints(const TerrainGrid& g)
+{
+    const std::vector<double> h = cornerTerrain(g);
+    auto xyz = spoutlab::vtkxml::doubleArray("", 3, h.size() * (g.nz + 1));
+    vtkIdType n = 0;
+    for (int k = 0; k <= g.nz; ++k)
+        for (int j = 0; j <= g.ny; ++j)
+            for (int i = 0; i <= g.nx; ++i)
+            {
+                const double hij = h[static_cast<std::size_t>(j) * (g.nx + 1) + i];
+                xyz->SetTuple3(n++, g.x0 + i * g.dx, g.y0 + j * g.dy, hij + (g.zTop - hij) * g.fFace[k]);
+            }
+    auto points = vtkSmartPointer<vtkPoints>::New();
+    points->SetData(xyz);
+    return points;
+}
+
+} // namespace
+
 void writeVts(const std::string& path, const TerrainGrid& g, const std::string& fieldName,
               const std::vector<double>& v)
 {
-    OutputFile file(path);
-    std::ostream& out = file.out();
-    const int nx = g.nx, ny = g.ny, nz = g.nz;
-    out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"StructuredGrid\" version=\"0.1\" "
-           "byte_order=\"LittleEndian\">\n<StructuredGrid WholeExtent=\"0 "
-        << nx << " 0 " << ny << " 0 " << nz << "\">\n<Piece Extent=\"0 " << nx << " 0 " << ny
-        << " 0 " << nz << "\">\n<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" "
-                          "format=\"ascii\">\n";
-    out << std::setprecision(8);
-    // terrain at the column corners: mean of the adjacent column centres
-    auto corner = [&](int i, int j) {
-        double s = 0;
-        int n = 0;
-        for (int dj = -1; dj <= 0; ++dj)
-            for (int di = -1; di <= 0; ++di)
-            {
-                const int ii = i + di, jj = j + dj;
-                if (ii < 0 || jj < 0 || ii >= nx || jj >= ny) continue;
-                s += g.hc[g.col(ii, jj)];
-                ++n;
-            }
-        return s / n;
-    };
-    std::vector<double> hcorner(static_cast<std::size_t>(nx + 1) * (ny + 1));
-    for (int j = 0; j <= ny; ++j)
-        for (int i = 0; i <= nx; ++i) hcorner[j * (nx + 1) + i] = corner(i, j);
-    for (int k = 0; k <= nz; ++k)
-        for (int j = 0; j <= ny; ++j)
-            for (int i = 0; i <= nx; ++i)
-            {
-                const double h = hcorner[j * (nx + 1) + i];
-                out << g.x0 + i * g.dx << ' ' << g.y0 + j * g.dy << ' '
-                    << h + (g.zTop - h) * g.fFace[k] << '\n';
-            }
-    out << "</DataArray>\n</Points>\n<CellData Scalars=\"" << fieldName
-        << "\">\n<DataArray type=\"Float64\" Name=\"" << fieldName << "\" format=\"ascii\">\n";
-    out << std::setprecision(6);
-    for (std::size_t n = 0; n < v.size(); ++n) out << v[n] << ((n % 8 == 7) ? '\n' : ' ');
-    out << "\n</DataArray>\n</CellData>\n</Piece>\n</StructuredGrid>\n</VTKFile>\n";
-    file.close();
+    if (v.size() != g.size())
+        throw std::logic_error(path + ": " + std::to_string(v.size()) + " cell values for a grid of " +
+                               std::to_string(g.size()) + " cells");
+    vtkNew<vtkStructuredGrid> grid;
+    grid->SetDimensions(g.nx + 1, g.ny + 1, g.nz + 1);
+    grid->SetPoints(cornerPoints(g));
+    // VTK's cell order (i fastest, then j, then k) is the grid's own idx(i, j, k)
+    auto field = spoutlab::vtkxml::floatArray(fieldName, 1, v.size());
+    for (std::size_t n = 0; n < v.size(); ++n) field->SetValue(static_cast<vtkIdType>(n), float(v[n]));
+    grid->GetCellData()->SetScalars(field);
+    // staged like every procsim output: in place only when the command succeeds
+    const std::string tmp = path + ".tmp";
+    try
+    {
+        spoutlab::vtkxml::write(grid, tmp);
+    }
+    catch (const std::runtime_error&)
+    {
+        std::remove(tmp.c_str());
+        throw InputError(path + ": cannot be written");
+    }
+    OutputBatch::stage(tmp, path);
 }
 
 void writePvd(const std::string& path, const std::vector<std::pair<double, std::string>>& entries)
 {
-    OutputFile file(path);
-    std::ostream& out = file.out();
-    out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n";
-    for (const auto& e : entries)
-        out << "  <DataSet timestep=\"" << e.first << "\" file=\"" << e.second << "\"/>\n";
-    out << "</Collection>\n</VTKFile>\n";
-    file.close();
+    writeTextFile(path, spoutlab::vtkxml::collection(entries));
 }
 
 } // namespace procsim::plume
