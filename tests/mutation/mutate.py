@@ -19,10 +19,11 @@ the code on purpose, one fault at a time, and records which tests notice:
 
 Each fault is a regular expression that must match its file the stated
 number of times, so an edit of the code under it shows up as "not applied"
-instead of silently testing nothing.  The test selections are the unit,
-python and procsim tests of the broken part plus the small column cases
-that exercise it; the long spouted-bed protocol runs and the input fuzzer
-are left out (they cannot see these faults more sharply and cost minutes).
+instead of silently testing nothing.  The test selections are the unit and
+python tests plus, for a coupling fault, the one or two column cases whose
+answer it moves, and for a procsim fault that model's tests: each fault
+costs a rebuild and a few minutes.  The case variants, the spouted-bed runs
+and the input fuzzer are left out (minutes each, no sharper view).
 
   tests/mutation/mutate.py [--scratch DIR] [--only NAME ...] [--table FILE]
 
@@ -83,40 +84,42 @@ def scaled_number(factor: float) -> Callable[[re.Match], str]:
     return repl
 
 
-# Tests of the coupling core and the cases that run it end to end: the
-# GoogleTest units (label unit, with the python post-processing tests), the
-# divided model on blockMesh meshes, the fixed bed, the settling sphere and
-# minimum fluidisation under every option, and the reduced spouted bed.
-COUPLING_TESTS = ["label:unit", "re:^foam\\.",
-                  "re:^case\\.(packedBed|settlingParticle|minFluidisation)",
-                  "re:^case\\.spoutedBedReduced$"]
+# The coupling core's fast tests: the GoogleTest units and the python
+# post-processing tests (label unit, about ten seconds).  Each coupling fault
+# adds the one or two column cases (half a minute each) whose answer the
+# fault moves, so a fault costs a rebuild and two or three minutes of tests.
+UNIT = ["label:unit"]
+PACKED_BED = "re:^case\\.packedBed$"          # dP vs Ergun, mapped voidage vs the particles
+SETTLING = "re:^case\\.settlingParticle$"     # terminal velocity under Gidaspow (Wen-Yu)
+MIN_FLUIDISATION = "re:^case\\.minFluidisation$"  # bed lifted at u_mf: drag plus -V grad p
+FOAM = "re:^foam\\."                          # the divided model on real meshes
 
 FAULTS = [
     Fault("beta x 1.1",
           [Edit("coupling/MomentumExchange.cpp",
                 r"(out\.beta\[\s*\w+\s*\]\s*=\s*)([^;]*drag_\s*->\s*beta\s*\([^;]*\))\s*;",
                 r"\g<1>1.1 * (\g<2>);")],
-          COUPLING_TESTS, "the cell's exchange coefficient 10 % high (cellBeta)"),
+          UNIT + [PACKED_BED, SETTLING], "the cell's exchange coefficient 10 % high (cellBeta)"),
     Fault("sub-spheres 30 -> 1",
           [Edit("coupling/DividedVoidFraction.cpp",
                 r"samples_\s*\.\s*push_back\s*\(\s*obliqueOrientation\s*\(\s*s\s*\.\s*centroid\s*\(\s*\)\s*\)\s*\)\s*;",
                 "samples_.assign(1, Vec3{0.0, 0.0, 0.0});")],
-          COUPLING_TESTS, "the divided model samples one piece, the centre (the centre model in disguise)"),
+          UNIT + [FOAM, PACKED_BED], "the divided model samples one piece, the centre (the centre model in disguise)"),
     Fault("pressure-gradient force off",
           [Edit("coupling/MomentumExchange.cpp",
                 r"(out\.pressureForce\[\s*\w+\s*\]\s*=\s*)[^;]*gradP[^;]*;",
                 r"\g<1>Vec3{};")],
-          COUPLING_TESTS, "no -V grad p (nor buoyancy) on the particles (particleForces)"),
+          UNIT + [MIN_FLUIDISATION], "no -V grad p (nor buoyancy) on the particles (particleForces)"),
     Fault("Cd cap removed",
           [Edit("coupling/Gidaspow.cpp",
                 r"^\s*if\s*\(\s*re\s*>=?\s*1000(\.0*)?\s*\)\s*return\s+0\.44\s*\*[^;]*;[^\n]*\n",
                 "")],
-          COUPLING_TESTS, "Schiller-Naumann carried on above Re 1000 instead of C_d = 0.44"),
+          UNIT + [SETTLING], "Schiller-Naumann carried on above Re 1000 instead of C_d = 0.44"),
     Fault("eps exponent -2.65 -> -1.65",
           [Edit("coupling/Gidaspow.cpp",
                 r"(std::pow\s*\(\s*eps\s*,\s*)-2\.65(\s*\))",
                 r"\g<1>-1.65\g<2>")],
-          COUPLING_TESTS, "Wen-Yu's voidage function eps^-1.65"),
+          UNIT + [SETTLING], "Wen-Yu's voidage function eps^-1.65"),
     Fault("kinetics k5 x 1.05",
           [Edit("process_cases/kinetics/*mechanism*.yaml",
                 r"\{\s*id:\s*k5\s*,[^}\n]*?\bk:\s*(?P<value>[0-9.]+(?:[eE][-+]?[0-9]+)?)",
