@@ -41,6 +41,14 @@ bool drawPng(const std::string& png, const std::string& script, int width, int h
     return true;
 }
 
+bool drawWhenCommitted(const std::string& png, const std::string& script, int width, int height)
+{
+    if (!OutputBatch::open()) return drawPng(png, script, width, height);
+    // the data files the script reads are staged too: draw once they are in place
+    OutputBatch::defer([=] { drawPng(png, script, width, height); });
+    return true;
+}
+
 } // namespace
 
 PlotVariables& PlotVariables::set(const std::string& name, const std::string& text)
@@ -55,20 +63,12 @@ PlotVariables& PlotVariables::set(const std::string& name, double value)
     return *this;
 }
 
-bool plotPng(const std::string& png, const std::string& script, int width, int height)
-{
-    if (!OutputBatch::open()) return drawPng(png, script, width, height);
-    // the data files the script reads are staged too: draw once they are in place
-    OutputBatch::defer([=] { drawPng(png, script, width, height); });
-    return true;
-}
-
 bool plotPng(const std::string& png, std::string_view script, const PlotVariables& variables, int width,
              int height)
 {
     // CSV input; underscores in names printed as they are, not as subscripts
     const std::string shared = "set termoption noenhanced\nset datafile separator ','\n";
-    return plotPng(png, variables.script() + shared + std::string(script), width, height);
+    return drawWhenCommitted(png, variables.script() + shared + std::string(script), width, height);
 }
 
 } // namespace procsim

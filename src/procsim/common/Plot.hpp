@@ -31,7 +31,4 @@ private:
 bool plotPng(const std::string& png, std::string_view script, const PlotVariables& variables,
              int width = 900, int height = 600);
 
-// The same for a script assembled in code (kept for callers not yet moved to script files).
-bool plotPng(const std::string& png, const std::string& gnuplotScript, int width = 900, int height = 600);
-
 } // namespace procsim

@@ -141,7 +141,7 @@ int main(int argc, char** argv)
         for (int i = 0; i < nx; ++i) s.add(g.xc(i), g.zc(i, 0, k), t.c[g.idx(i, 0, k)]);
     if (!write.empty())
     {
-        OutputFile file(write);
+        procsim::OutputFile file(write);
         std::ostream& out = file.out();
         out.precision(12);
         for (int k = 0; k < nz; ++k)

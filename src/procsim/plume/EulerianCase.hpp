@@ -1,5 +1,6 @@
 #pragma once
-// The `procsim plume eulerian` case: YAML input, runs of the scenarios, outputs.
+// The `procsim plume eulerian` case: its YAML input, the grid it asks for,
+// its sources on that grid (the command is plume/EulerianCommand.cpp).
 #include <memory>
 #include <string>
 #include <vector>
@@ -63,7 +64,5 @@ struct ScenarioResult
     double dtMin = 0, dtMax = 0;
     long steps = 0;
 };
-
-int eulerianMain(int argc, char** argv);
 
 } // namespace procsim::plume

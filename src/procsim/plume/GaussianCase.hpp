@@ -22,6 +22,4 @@ struct GaussianSetup
 const std::vector<std::string>& gaussianSetupKeys();
 GaussianSetup parseGaussianSetup(const YamlInput& in);
 
-int gaussianMain(int argc, char** argv);
-
 } // namespace procsim::plume

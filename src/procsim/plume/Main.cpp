@@ -6,9 +6,7 @@
 #include <vector>
 
 #include "common/Subcommands.hpp"
-#include "plume/EulerianCase.hpp"
-#include "plume/GaussianCase.hpp"
-#include "plume/MonteCarlo.hpp"
+#include "plume/Commands.hpp"
 #include "plume/Texts.hpp"
 
 namespace procsim::plume
@@ -17,7 +15,7 @@ namespace procsim::plume
 int main(int argc, char** argv)
 {
     static const std::vector<Subcommand> models = {
-        {"eulerian", eulerianMain}, {"gaussian", gaussianMain}, {"montecarlo", monteCarloMain}};
+        {"eulerian", eulerianCommand}, {"gaussian", gaussianCommand}, {"montecarlo", monteCarloCommand}};
     return runSubcommand("plume", texts::help::plume, models, argc, argv, "model");
 }
 

@@ -37,6 +37,4 @@ Climate fitClimate(const MetSeries& history, int startDay, double startHour);
 // One synthetic year (8760 h from 1 January, 0 h).
 std::vector<MetHour> synthesiseYear(const Climate& c, double w, Stream& rng);
 
-int monteCarloMain(int argc, char** argv);
-
 } // namespace procsim::plume
