@@ -791,6 +791,16 @@ void DemCoupling::write()
 
     lastWritten_ = runTime.timeName();
     writeParticles();
+    // LIGGGHTS 3.8 cannot write a system without atoms (its set-up stops
+    // with "Atom types must start from 1"): once lostParticles delete has
+    // removed the last particle there is no DEM restart, and a restart from
+    // these times stops naming the missing file
+    if (dem_->nParticles() == 0)   // all ranks: write_restart is collective
+    {
+        Foam::Info<< "spoutFoam: no particles left, no LIGGGHTS restart at t = "
+            << runTime.timeName() << " s" << Foam::endl;
+        return;
+    }
     const Foam::fileName stem =
         runTime.globalPath()/"DEM"/("restart_" + runTime.timeName());
     dem_->writeRestart(stem + ".liggghts", stem + ".state");

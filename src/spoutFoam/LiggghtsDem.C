@@ -379,7 +379,9 @@ void LiggghtsDem::deleteParticles(const std::vector<long>& ids)
     command(group);
     command("delete_atoms group spoutFoamLost");
     command("group spoutFoamLost delete");
-    setup();
+    // LIGGGHTS 3.8 refuses a set-up without atoms ("Atom types must start
+    // from 1"); with none left there are no neighbour lists to rebuild
+    if (nParticles() > 0) setup();
 }
 
 
