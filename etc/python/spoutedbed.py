@@ -153,23 +153,25 @@ def snapshot(g, vtp, png, title, vmax=1.0, field='velocity', vmin=None,
     os.remove(data)
 
 
-def field_map(g, centres, values, png, title, label, vmin, vmax):
-    """A cell field of the gas mesh in the x-z plane, one square per cell."""
+def field_map(g, centres, values, png, title, label, vmin, vmax, zmax=None):
+    """A cell field of the gas mesh in the x-z plane, one square per cell
+    (up to zmax [m], default the vessel's height)."""
     data = png[:-4] + '.dat'
     with open(data, 'w') as f:
         for (x, y, z), v in zip(centres, values):
             f.write('%.6g %.6g %.6g\n' % (x, z, v))
     plot_map(g, png, title, label, vmin, vmax,
              'plot "%s" using 1:2:(%g):(%g):3 with boxxyerror lc palette fs solid noborder notitle'
-             % (data, g.dx / 2000, g.dz / 2000))
+             % (data, g.dx / 2000, g.dz / 2000), zmax)
     os.remove(data)
 
 
-def plot_map(g, png, title, label, vmin, vmax, plot):
+def plot_map(g, png, title, label, vmin, vmax, plot, zmax=None):
     import spoutlab_case as sc
+    zmax = g.H / 1000 if zmax is None else min(zmax, g.H / 1000)
     arrows = '\n'.join('set arrow from %g,%g to %g,%g nohead lw 2 lc rgb "black" front'
                        % s for s in outline(g))
-    height = 0.8 * g.H / g.W * 600 + 120
+    height = 0.8 * zmax * 1000 / g.W * 600 + 120
     sc.plot(png, '''
 set title "%s"
 set size ratio -1
@@ -182,7 +184,7 @@ set cbrange [%g:%g]
 set palette defined (0 "#3b4cc0", 0.5 "#dddddd", 1 "#b40426")
 %s
 %s
-''' % (title, -g.W / 2000, g.W / 2000, g.H / 1000, label, vmin, vmax, arrows, plot),
+''' % (title, -g.W / 2000, g.W / 2000, zmax, label, vmin, vmax, arrows, plot),
             size=(600, int(height)))
 
 
@@ -348,6 +350,12 @@ def particle_series(case='.'):
     return sorted(out)
 
 
+# write times drift from their nominal values by a time step or so (0.0999,
+# 0.2001 for 0.1, 0.2 with 0.3 ms steps): a particle file this close to a
+# window's end belongs to the window
+WINDOW_SLACK = 1e-3
+
+
 def bed_spouts(g, case, t0, t1):
     """Whether the bed spouts between t0 and t1 [s]: the spout classifier
     (etc/python/spoutregime.py: open dilute core through the bed, upward
@@ -363,7 +371,7 @@ def bed_spouts(g, case, t0, t1):
     region = spoutregime.SpoutRegion.of(g)
     snapshots = []
     for t, path in particle_series(case):
-        if t0 - 1e-6 <= t <= t1 + 1e-6:
+        if t0 - WINDOW_SLACK <= t <= t1 + WINDOW_SLACK:
             vz = sc.read_vtp_array(path, 'velocity')[2::3]
             snapshots.append(spoutregime.measure(g, region, sc.read_vtp_points(path), vz,
                                                  sc.read_vtp_array(path, 'radius'), t))
@@ -373,13 +381,14 @@ def bed_spouts(g, case, t0, t1):
 def settled_bed(g, vtp):
     """(bed height [m], mean voidage) of a settled bed: the height is the
     99th percentile of the particle tops (a few particles resting on the
-    surface do not count); the voidage is that of the vessel below 0.8 of
-    it, clear of the uneven surface, walls and base included."""
+    surface do not count); the voidage is that of the vessel below half
+    of it, clear of the uneven surface (with plates, the spout and the
+    downcomers settle to different levels), walls and base included."""
     import spoutlab_case as sc
     z = [p[2] for p in sc.read_vtp_points(vtp)]
     r = sc.read_vtp_array(vtp, 'radius')
     height = sorted(z)[int(0.99 * (len(z) - 1))] + max(r)
-    h = 0.8 * height
+    h = 0.5 * height
     solid = sum(4 / 3 * math.pi * ri ** 3 for zi, ri in zip(z, r) if zi < h)
     return height, 1 - solid / vessel_volume(g, h)
 
