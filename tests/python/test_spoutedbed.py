@@ -1,6 +1,7 @@
 """The spouted-bed post-processing rules that turn protocol output into the
 paper's quantities: u_ms and the hysteresis from the pressure-drop curve
 and the spout classifier's verdicts, the step schedule, Ergun's u_mf."""
+import math
 import os
 import sys
 import unittest
@@ -109,6 +110,30 @@ class ErgunMinimumFluidisation(unittest.TestCase):
         u = [spoutedbed.ergun_umf(self.d, self.rho_p, self.rho_g, self.mu, eps_mf=e)
              for e in (0.38, 0.42, 0.46)]
         self.assertTrue(u[0] < u[1] < u[2])
+
+
+class VesselVolume(unittest.TestCase):
+    """The vessel below a height, for the settled bed's voidage: the slanted
+    part is a trapezoid, the rest a rectangle, less the plates."""
+    case = os.path.join(os.path.dirname(__file__), '..', '..', 'openfoam_cases',
+                        'spoutDraftPlates')
+
+    def test_below_the_top_of_the_base_a_trapezoid(self):
+        g = spoutedbed.load(self.case, ['plates=no'])
+        h = 0.3
+        top = 0.033 + 2 * h / math.tan(math.radians(60))
+        self.assertAlmostEqual(spoutedbed.vessel_volume(g, h), (0.033 + top) / 2 * h * 0.04,
+                               places=12)
+
+    def test_above_it_the_full_width_and_the_plates_taken_out(self):
+        g = spoutedbed.load(self.case, ['plates=no'])
+        z = 0.231 * math.tan(math.radians(60))           # the base meets the walls
+        below = (0.033 + 0.495) / 2 * z * 0.04
+        self.assertAlmostEqual(spoutedbed.vessel_volume(g, 0.7), below + 0.495 * (0.7 - z) * 0.04,
+                               places=12)
+        plated = spoutedbed.load(self.case)
+        self.assertAlmostEqual(spoutedbed.vessel_volume(g, 0.7) - spoutedbed.vessel_volume(plated, 0.7),
+                               2 * 0.011 * (0.7 - 0.095) * 0.04, places=12)
 
 
 class NextStep(unittest.TestCase):
