@@ -339,17 +339,6 @@ class Schedule:
             else None
 
 
-def particle_series(case='.'):
-    """[(time, path)] of a case's particles/particles_<time>.vtp, by time."""
-    folder = os.path.join(case, 'particles')
-    out = []
-    for f in os.listdir(folder) if os.path.isdir(folder) else []:
-        m = re.match(r'^particles_([-+.\deE]+)\.vtp$', f)
-        if m:
-            out.append((float(m.group(1)), os.path.join(folder, f)))
-    return sorted(out)
-
-
 # write times drift from their nominal values by a time step or so (0.0999,
 # 0.2001 for 0.1, 0.2 with 0.3 ms steps): a particle file this close to a
 # window's end belongs to the window
@@ -363,14 +352,12 @@ def bed_spouts(g, case, t0, t1):
     the window), with its default spout region for the vessel.  The one
     place the protocols ask; returns the classifier's Verdict (.spouts,
     .describe())."""
-    try:
-        import spoutregime
-    except ImportError:
-        sys.exit('spoutedbed: the spout classifier etc/python/spoutregime.py is missing')
+    import mixing
     import spoutlab_case as sc
+    import spoutregime
     region = spoutregime.SpoutRegion.of(g)
     snapshots = []
-    for t, path in particle_series(case):
+    for t, path in mixing.particle_files(case):
         if t0 - WINDOW_SLACK <= t <= t1 + WINDOW_SLACK:
             vz = sc.read_vtp_array(path, 'velocity')[2::3]
             snapshots.append(spoutregime.measure(g, region, sc.read_vtp_points(path), vz,
