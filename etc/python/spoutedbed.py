@@ -153,23 +153,25 @@ def snapshot(g, vtp, png, title, vmax=1.0, field='velocity', vmin=None,
     os.remove(data)
 
 
-def field_map(g, centres, values, png, title, label, vmin, vmax):
-    """A cell field of the gas mesh in the x-z plane, one square per cell."""
+def field_map(g, centres, values, png, title, label, vmin, vmax, zmax=None):
+    """A cell field of the gas mesh in the x-z plane, one square per cell
+    (up to zmax [m], default the vessel's height)."""
     data = png[:-4] + '.dat'
     with open(data, 'w') as f:
         for (x, y, z), v in zip(centres, values):
             f.write('%.6g %.6g %.6g\n' % (x, z, v))
     plot_map(g, png, title, label, vmin, vmax,
              'plot "%s" using 1:2:(%g):(%g):3 with boxxyerror lc palette fs solid noborder notitle'
-             % (data, g.dx / 2000, g.dz / 2000))
+             % (data, g.dx / 2000, g.dz / 2000), zmax)
     os.remove(data)
 
 
-def plot_map(g, png, title, label, vmin, vmax, plot):
+def plot_map(g, png, title, label, vmin, vmax, plot, zmax=None):
     import spoutlab_case as sc
+    zmax = g.H / 1000 if zmax is None else min(zmax, g.H / 1000)
     arrows = '\n'.join('set arrow from %g,%g to %g,%g nohead lw 2 lc rgb "black" front'
                        % s for s in outline(g))
-    height = 0.8 * g.H / g.W * 600 + 120
+    height = 0.8 * zmax * 1000 / g.W * 600 + 120
     sc.plot(png, '''
 set title "%s"
 set size ratio -1
@@ -182,7 +184,7 @@ set cbrange [%g:%g]
 set palette defined (0 "#3b4cc0", 0.5 "#dddddd", 1 "#b40426")
 %s
 %s
-''' % (title, -g.W / 2000, g.W / 2000, g.H / 1000, label, vmin, vmax, arrows, plot),
+''' % (title, -g.W / 2000, g.W / 2000, zmax, label, vmin, vmax, arrows, plot),
             size=(600, int(height)))
 
 
@@ -205,65 +207,206 @@ def kudra_eq12(g, Hb, phi=1.0, rho_g=1.205):
             * ((rho_p - rho_g) / rho_g * He / Lb)**0.15 * (Wd * dp / (Wi * Hb))**0.084)
 
 
-# The spout has collapsed when the upward solid flux on its axis (time-
-# averaged over a step) falls below this fraction of the flux at the first
-# step of the decreasing branch.  A collapsed bed's 1.8-s mean flux scatters
-# around zero by up to a quarter of a working spout's (full bed: -0.013 to
-# +0.010 m/s against 0.02-0.06 m/s), so the threshold sits above that.
-SPOUT_STOPPED = 0.25
+# --- the minimum-spouting protocol: verdicts, u_ms, the hysteresis loop -------
+# Each step of the protocol is judged by the spout classifier (spouts / does
+# not spout over the step's averaging window); the rules below turn the
+# steps' (u_s, dP, spouts) into the paper's quantities.
+
+def minimum_spouting(down):
+    """u_ms on the decreasing branch, the paper's criterion: the lowest
+    velocity that still spouts before a slight further cut collapses the
+    spout, where dP begins to rise steeply.  down: (u_s, dP, spouts) in
+    decreasing u_s.  Returns (u_ms, dP_ms, dP after the collapse), or None
+    if the spout never collapsed."""
+    # the last collapse counts: a spout that pinched off for one step and
+    # recovered below it was still a spout there
+    collapse = None
+    for (u, dp, spouts), (_, dp_next, spouts_next) in zip(down, down[1:]):
+        if spouts and not spouts_next:
+            collapse = (u, dp, dp_next)
+    return collapse
 
 
-def minimum_spouting(down, stopped=SPOUT_STOPPED):
-    """u_ms on the decreasing branch, as section 4.1 defines it: the velocity
-    at which a slight further cut collapses the spout.  down: (u_s, dP,
-    upward solid flux on the spout axis) in decreasing u_s.  Returns
-    (u_ms, dP_ms, dP after the collapse), or None if the spout never
-    collapsed."""
-    reference = down[0][2] if down else 0.0
-    for (u, dp, _), (_, dp_next, flux_next) in zip(down, down[1:]):
-        if flux_next < stopped * reference:
-            return u, dp, dp_next
-    return None
-
-
-def spout_reforms(up, reference, stopped=SPOUT_STOPPED):
-    """On the increasing branch (which starts collapsed), the first velocity
-    at which the spout carries particles again: (u, dP) or None.  reference:
-    the flux at the first step of the decreasing branch."""
-    for u, dp, flux in up:
-        if flux >= stopped * reference:
+def spout_reforms(up):
+    """On a rising branch, the first velocity at which the bed spouts:
+    (u, dP) or None."""
+    for u, dp, spouts in up:
+        if spouts:
             return u, dp
     return None
 
 
-def next_velocity(done, start, stop, step, up, confirm=2, stopped=SPOUT_STOPPED):
-    """The minimum-spouting schedule, decided as it goes, the way it is done
-    at the rig: the u_s of the next step after the finished ones, or None when
-    the protocol is complete.  done: (u_s, branch 'down'/'up', spout flux) of
-    the finished steps after the spin-up, oldest first.  Lowering u_s stops
-    at `stop` or once `confirm` successive steps have collapsed (flux below
-    `stopped` x the flux of the first step); with `up`, u_s then rises again
-    until `confirm` successive steps spout or `start` is reached.  Steps
-    beyond that only repeat the confirmed state and cost minutes each."""
-    tol = 1e-6 * step
-    if not done:
-        return round(start - step, 6)
-    reference = done[0][2]
-
-    def streak(branch, collapsed):
-        n = 0
-        for u, b, flux in reversed(done):
-            if b != branch or (flux < stopped * reference) != collapsed:
-                break
-            n += 1
-        return n
-
-    u, branch, _ = done[-1]
-    if branch == 'down' and u - step >= stop - tol and streak('down', True) < confirm:
-        return round(u - step, 6)
-    if not up or u + step > start + tol or (branch == 'up' and streak('up', False) >= confirm):
+def break_through(packed):
+    """The increasing branch from the packed bed (Fig 2): dP rises while
+    the voidage expansion penetrates the bed, peaks, and falls once the
+    spout breaks through.  packed: (u_s, dP, spouts) in increasing u_s.
+    Returns (u at the peak, peak dP, u of the break-through, its dP): the
+    peak is the highest dP up to and including the first spouting step;
+    the last two are None if the bed never spouted.  None for no steps."""
+    if not packed:
         return None
-    return round(u + step, 6)
+    first = next((k for k, (_, _, s) in enumerate(packed) if s), None)
+    before = packed if first is None else packed[:first + 1]
+    u_peak, dp_peak, _ = max(before, key=lambda r: r[1])
+    if first is None:
+        return u_peak, dp_peak, None, None
+    return u_peak, dp_peak, packed[first][0], packed[first][1]
+
+
+def hysteresis(packed, down):
+    """The size of Fig 2's loop [Pa]: the peak dP of the packed branch minus
+    dP on the decreasing branch at the same u_s (linear between its steps).
+    None when the decreasing branch does not span the peak's velocity."""
+    peak = break_through(packed)
+    pts = sorted((u, dp) for u, dp, _ in down)
+    if peak is None or len(pts) < 1:
+        return None
+    u = peak[0]
+    tol = 1e-9
+    for (u0, p0), (u1, p1) in zip(pts, pts[1:]):
+        if u0 - tol <= u <= u1 + tol:
+            return peak[1] - (p0 + (p1 - p0) * (u - u0) / (u1 - u0))
+    if len(pts) == 1 and abs(pts[0][0] - u) < tol:
+        return peak[1] - pts[0][1]
+    return None
+
+
+class Schedule:
+    """The minimum-spouting schedule, decided as the run goes, the way it is
+    done at the rig.  Two ways to begin:
+
+      rise_from  the paper's Fig 2: start on the settled (packed) bed at
+                 rise_from and raise u_s by `step` ('packed' branch) until
+                 `confirm` successive steps spout (the break-through and a
+                 step above it, where dP has fallen and levels off) or `top`
+                 is reached; a bed that never spouts ends there;
+      start      spin the bed up first (the protocol's kick), then begin the
+                 decreasing branch at start.
+
+    The decreasing branch ('down') runs from one step below the top of the
+    rise (or from start) until `confirm` successive steps have collapsed or
+    `stop` is reached; with `up`, u_s then rises again ('up') until `confirm`
+    successive steps spout or it is back at the top.  Steps beyond that
+    only repeat a confirmed state and cost minutes each."""
+
+    def __init__(self, step, stop, rise_from=None, top=None, start=None, up=False, confirm=2):
+        if (rise_from is None) == (start is None):
+            raise ValueError('a schedule begins either on the packed bed (rise_from) or '
+                             'after a spin-up (start), not both or neither')
+        if rise_from is not None and not (top is not None and top >= rise_from):
+            raise ValueError('the packed branch needs a top velocity >= its first, got %r'
+                             % top)
+        self.step, self.stop, self.up, self.confirm = step, stop, up, confirm
+        self.rise_from, self.start = rise_from, start
+        self.top = top if rise_from is not None else start
+        self.tol = 1e-6 * step
+
+    def first(self):
+        return (self.rise_from, 'packed') if self.rise_from is not None else (self.start, 'down')
+
+    def next(self, done):
+        """(u_s, branch) of the step after the finished ones, or None when
+        the protocol is complete.  done: (u_s, branch, spouts), oldest first."""
+        def streak(branch, spouts):
+            n = 0
+            for _, b, s in reversed(done):
+                if b != branch or s != spouts:
+                    break
+                n += 1
+            return n
+
+        def at(u):
+            return round(u, 6)
+
+        u, branch, spouts = done[-1]
+        if branch == 'packed':
+            if streak('packed', True) >= self.confirm:
+                return self.lower(u)
+            if u + self.step <= self.top + self.tol:
+                return at(u + self.step), 'packed'
+            # at the top: lower it only if it spouts there at all
+            return self.lower(u) if spouts else None
+        if branch == 'down' and streak('down', False) < self.confirm:
+            nxt = self.lower(u)
+            if nxt:
+                return nxt
+        if not self.up or (branch == 'up' and streak('up', True) >= self.confirm):
+            return None
+        return (at(u + self.step), 'up') if u + self.step <= self.top + self.tol else None
+
+    def lower(self, u):
+        return (round(u - self.step, 6), 'down') if u - self.step >= self.stop - self.tol \
+            else None
+
+
+# write times drift from their nominal values by a time step or so (0.0999,
+# 0.2001 for 0.1, 0.2 with 0.3 ms steps): a particle file this close to a
+# window's end belongs to the window
+WINDOW_SLACK = 1e-3
+
+
+def bed_spouts(g, case, t0, t1):
+    """Whether the bed spouts between t0 and t1 [s]: the spout classifier
+    (etc/python/spoutregime.py: open dilute core through the bed, upward
+    flux in it, a fountain, persistent over the particle files written in
+    the window), with its default spout region for the vessel.  The one
+    place the protocols ask; returns the classifier's Verdict (.spouts,
+    .describe())."""
+    import mixing
+    import spoutlab_case as sc
+    import spoutregime
+    region = spoutregime.SpoutRegion.of(g)
+    snapshots = []
+    for t, path in mixing.particle_files(case):
+        if t0 - WINDOW_SLACK <= t <= t1 + WINDOW_SLACK:
+            vz = sc.read_vtp_array(path, 'velocity')[2::3]
+            snapshots.append(spoutregime.measure(g, region, sc.read_vtp_points(path), vz,
+                                                 sc.read_vtp_array(path, 'radius'), t))
+    return spoutregime.Verdict(snapshots)
+
+
+def settled_bed(g, vtp):
+    """(bed height [m], mean voidage) of a settled bed: the height is the
+    99th percentile of the particle tops (a few particles resting on the
+    surface do not count); the voidage is that of the vessel below half
+    of it, clear of the uneven surface (with plates, the spout and the
+    downcomers settle to different levels), walls and base included."""
+    import spoutlab_case as sc
+    z = [p[2] for p in sc.read_vtp_points(vtp)]
+    r = sc.read_vtp_array(vtp, 'radius')
+    height = sorted(z)[int(0.99 * (len(z) - 1))] + max(r)
+    h = 0.5 * height
+    solid = sum(4 / 3 * math.pi * ri ** 3 for zi, ri in zip(z, r) if zi < h)
+    return height, 1 - solid / vessel_volume(g, h)
+
+
+def vessel_volume(g, h):
+    """Volume [m3] of the vessel below the height h [m]: the slanted base
+    widening from the slot to the walls, less the draft plates."""
+    mm = 1e-3
+    W, Wi, Lb, top = g.W * mm, g.Wi * mm, g.Lb * mm, g.baseTop * mm
+    hb = min(h, top)
+    area = Wi * hb + hb * hb / g.tan + W * max(0.0, h - top)
+    if g.plates:
+        area -= 2 * g.t * mm * max(0.0, min(h, g.Hd * mm) - g.He * mm)
+    return area * Lb
+
+
+# --- Ergun's minimum fluidisation velocity ----------------------------------
+
+def ergun_umf(d, rho_p, rho_g, mu, eps_mf=None, phi=1.0, g=9.81):
+    """u_mf [m/s] from the Ergun equation at incipient fluidisation,
+    Ar = 150 (1 - e)/(phi^2 e^3) Re + 1.75/(phi e^3) Re^2, Re = rho_g u d/mu,
+    Ar = d^3 rho_g (rho_p - rho_g) g/mu^2.  Without eps_mf, Wen and Yu's
+    form of it (1/(phi e^3) = 14, (1 - e)/(phi^2 e^3) = 11), the 'simple
+    correlation' the no-draft paper quotes (1.746 m/s)."""
+    ar = d ** 3 * rho_g * (rho_p - rho_g) * g / mu ** 2
+    if eps_mf is None:
+        a, b = 1.75 * 14, 150 * 11
+    else:
+        a, b = 1.75 / (phi * eps_mf ** 3), 150 * (1 - eps_mf) / (phi ** 2 * eps_mf ** 3)
+    re = (-b + math.sqrt(b * b + 4 * a * ar)) / (2 * a)
+    return re * mu / (rho_g * d)
 
 
 def slope(xs, ys):

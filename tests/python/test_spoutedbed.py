@@ -1,5 +1,7 @@
 """The spouted-bed post-processing rules that turn protocol output into the
-paper's quantities (u_ms from the pressure-drop curve)."""
+paper's quantities: u_ms and the hysteresis from the pressure-drop curve
+and the spout classifier's verdicts, the step schedule, Ergun's u_mf."""
+import math
 import os
 import sys
 import unittest
@@ -26,82 +28,187 @@ class KudraEq12(unittest.TestCase):
 
 
 class MinimumSpouting(unittest.TestCase):
-    # (u_s, dP, upward solid flux on the spout axis)
-    down = [(1.5, 1000, 0.050), (1.4, 1040, 0.060), (1.3, 1070, 0.030), (1.2, 1100, 0.006),
-            (1.1, 1500, -0.004), (1.0, 1380, 0.003)]
+    # (u_s, dP, spouts by the classifier) on the decreasing branch
+    down = [(1.5, 1000, True), (1.4, 1040, True), (1.3, 1070, True), (1.2, 1100, True),
+            (1.1, 1500, False), (1.0, 1380, False)]
 
-    def test_collapse_is_the_first_step_whose_flux_falls_below_the_threshold(self):
-        # 10 % of the first step's 0.05 m/s: 0.006 still spouts, -0.004 does not
-        self.assertEqual(spoutedbed.minimum_spouting(self.down, stopped=0.1), (1.2, 1100, 1500))
-        # the default, 25 %: 0.006 m/s no longer counts as a spout
-        self.assertEqual(spoutedbed.minimum_spouting(self.down), (1.3, 1070, 1100))
+    def test_u_ms_is_the_last_spouting_step_before_a_collapse(self):
+        # the paper's criterion: the point below which dP rises steeply
+        self.assertEqual(spoutedbed.minimum_spouting(self.down), (1.2, 1100, 1500))
 
-    def test_threshold_is_a_fraction_of_the_first_flux(self):
-        # The series peaks after its first step (0.060 at 1.4 against 0.050 at 1.5), and at 55 %
-        # the references part: of the first flux the threshold is 0.0275, so 1.3 (0.030) still
-        # spouts and u_ms = 1.3; of the largest or of the previous step's flux it would be 0.033,
-        # 1.3 would count as collapsed and u_ms = 1.4.
-        self.assertEqual(spoutedbed.minimum_spouting(self.down, stopped=0.55)[0], 1.3)
+    def test_a_spout_that_pinches_off_once_and_recovers_is_not_collapsed(self):
+        down = [(1.5, 1000, True), (1.4, 1040, False), (1.3, 1070, True), (1.2, 1400, False),
+                (1.1, 1500, False)]
+        self.assertEqual(spoutedbed.minimum_spouting(down), (1.3, 1070, 1400))
 
     def test_a_spout_that_never_stops_has_no_u_ms(self):
-        self.assertIsNone(spoutedbed.minimum_spouting(self.down[:4], stopped=0.1))
+        self.assertIsNone(spoutedbed.minimum_spouting(self.down[:4]))
         self.assertIsNone(spoutedbed.minimum_spouting(self.down[:1]))
+        self.assertIsNone(spoutedbed.minimum_spouting([]))
 
 
 class SpoutReforms(unittest.TestCase):
-    def test_first_step_carrying_particles_again(self):
-        up = [(0.9, 1500, -0.01), (1.0, 1560, 0.002), (1.1, 1600, 0.02), (1.2, 1100, 0.04)]
-        self.assertEqual(spoutedbed.spout_reforms(up, reference=0.05), (1.1, 1600))
+    def test_first_step_spouting_again(self):
+        up = [(0.9, 1500, False), (1.0, 1560, False), (1.1, 1600, True), (1.2, 1100, True)]
+        self.assertEqual(spoutedbed.spout_reforms(up), (1.1, 1600))
 
     def test_never_reforms(self):
-        self.assertIsNone(spoutedbed.spout_reforms([(0.9, 1500, 0.0), (1.0, 1560, 0.001)],
-                                                   reference=0.05))
+        self.assertIsNone(spoutedbed.spout_reforms([(0.9, 1500, False), (1.0, 1560, False)]))
 
 
-class NextVelocity(unittest.TestCase):
-    """The adaptive schedule: from 1.5 m/s down by 0.1 to at most 0.8, and back up."""
+class PackedBranch(unittest.TestCase):
+    """Fig 2's increasing branch from the settled bed: dP rises to a peak,
+    the spout breaks through and dP falls."""
+    packed = [(1.0, 1500, False), (1.1, 1700, False), (1.2, 1900, False), (1.3, 1450, True),
+              (1.4, 1400, True)]
+    down = [(1.3, 1380, True), (1.2, 1300, True), (1.1, 1250, True), (1.0, 1600, False)]
 
-    def schedule(self, flux_at, up=True, confirm=2):
-        """Run the decision rule against a bed whose spout flux at u_s is
-        flux_at(u_s, branch); returns the velocities of the steps."""
-        done, u, branch = [], 1.5, 'down'
-        while u is not None:
-            done.append((u, branch, flux_at(u, branch)))
-            u_next = spoutedbed.next_velocity(done, start=1.5, stop=0.8, step=0.1, up=up,
-                                              confirm=confirm)
-            if u_next is not None:
-                branch = 'down' if u_next < u and branch == 'down' else 'up'
-            u = u_next
+    def test_peak_and_break_through(self):
+        self.assertEqual(spoutedbed.break_through(self.packed), (1.2, 1900, 1.3, 1450))
+
+    def test_a_bed_that_never_spouts_has_a_peak_but_no_break_through(self):
+        self.assertEqual(spoutedbed.break_through(self.packed[:3]), (1.2, 1900, None, None))
+        self.assertIsNone(spoutedbed.break_through([]))
+
+    def test_the_peak_is_taken_before_the_break_through_only(self):
+        # a later, higher reading (a slug) above the break-through is not the peak
+        packed = self.packed[:4] + [(1.4, 2500, True)]
+        self.assertEqual(spoutedbed.break_through(packed)[:2], (1.2, 1900))
+
+    def test_hysteresis_is_the_peak_minus_the_decreasing_branch_at_its_velocity(self):
+        self.assertAlmostEqual(spoutedbed.hysteresis(self.packed, self.down), 1900 - 1300)
+
+    def test_hysteresis_interpolates_between_decreasing_steps(self):
+        down = [(1.3, 1380, True), (1.1, 1250, True), (1.0, 1600, False)]
+        self.assertAlmostEqual(spoutedbed.hysteresis(self.packed, down), 1900 - 1315)
+
+    def test_no_hysteresis_outside_the_decreasing_branch(self):
+        self.assertIsNone(spoutedbed.hysteresis(self.packed, self.down[:1]))
+        self.assertIsNone(spoutedbed.hysteresis(self.packed, []))
+
+
+class ErgunMinimumFluidisation(unittest.TestCase):
+    """u_mf from the Ergun equation for the papers' particles in air at 20 C."""
+    d, rho_p, rho_g, mu = 8e-3, 1231.0, 1.205, 1.81e-5
+
+    def test_wen_yu_form_gives_the_papers_value(self):
+        # the no-draft paper quotes 1.746 m/s 'irregardless of the bed height'
+        u = spoutedbed.ergun_umf(self.d, self.rho_p, self.rho_g, self.mu)
+        self.assertAlmostEqual(u, 1.746, delta=0.002)
+
+    def test_at_a_given_voidage_by_hand(self):
+        # Ar = 150 (1-e)/e^3 Re + 1.75/e^3 Re^2 at e = 0.4, solved by hand:
+        # Ar = d^3 rho_g (rho_p - rho_g) g / mu^2 = 2.2718e7, Re = 886.4
+        u = spoutedbed.ergun_umf(self.d, self.rho_p, self.rho_g, self.mu, eps_mf=0.4)
+        Ar = self.d**3 * self.rho_g * (self.rho_p - self.rho_g) * 9.81 / self.mu**2
+        a, b = 1.75 / 0.4**3, 150 * 0.6 / 0.4**3
+        re = (-b + (b * b + 4 * a * Ar) ** 0.5) / (2 * a)
+        self.assertAlmostEqual(u, re * self.mu / (self.rho_g * self.d), places=6)
+        self.assertAlmostEqual(u, 1.664, delta=0.002)
+
+    def test_a_looser_bed_fluidises_later(self):
+        u = [spoutedbed.ergun_umf(self.d, self.rho_p, self.rho_g, self.mu, eps_mf=e)
+             for e in (0.38, 0.42, 0.46)]
+        self.assertTrue(u[0] < u[1] < u[2])
+
+
+class VesselVolume(unittest.TestCase):
+    """The vessel below a height, for the settled bed's voidage: the slanted
+    part is a trapezoid, the rest a rectangle, less the plates."""
+    case = os.path.join(os.path.dirname(__file__), '..', '..', 'openfoam_cases',
+                        'spoutDraftPlates')
+
+    def test_below_the_top_of_the_base_a_trapezoid(self):
+        g = spoutedbed.load(self.case, ['plates=no'])
+        h = 0.3
+        top = 0.033 + 2 * h / math.tan(math.radians(60))
+        self.assertAlmostEqual(spoutedbed.vessel_volume(g, h), (0.033 + top) / 2 * h * 0.04,
+                               places=12)
+
+    def test_above_it_the_full_width_and_the_plates_taken_out(self):
+        g = spoutedbed.load(self.case, ['plates=no'])
+        z = 0.231 * math.tan(math.radians(60))           # the base meets the walls
+        below = (0.033 + 0.495) / 2 * z * 0.04
+        self.assertAlmostEqual(spoutedbed.vessel_volume(g, 0.7), below + 0.495 * (0.7 - z) * 0.04,
+                               places=12)
+        plated = spoutedbed.load(self.case)
+        self.assertAlmostEqual(spoutedbed.vessel_volume(g, 0.7) - spoutedbed.vessel_volume(plated, 0.7),
+                               2 * 0.011 * (0.7 - 0.095) * 0.04, places=12)
+
+
+class NextStep(unittest.TestCase):
+    """The adaptive schedule, decided from the classifier's verdicts."""
+
+    def schedule(self, spouts_at, plan):
+        """Run the decision rule against a bed that spouts at u_s on a
+        branch when spouts_at(u_s, branch); returns (u_s, branch) of the steps."""
+        done, step = [], plan.first()
+        while step is not None:
+            u, branch = step
+            done.append((u, branch, spouts_at(u, branch)))
+            step = plan.next(done)
         return [(u, b) for u, b, _ in done]
 
     @staticmethod
     def bed(u, branch):
-        # spouts down to 1.1 m/s, re-forms only at 1.2 on the way up (hysteresis)
-        return 0.05 if u >= (1.1 if branch == 'down' else 1.2) else 0.0
+        # breaks through the packed bed at 1.3, spouts down to 1.1 on the
+        # way down, re-forms at 1.2 on the way up (hysteresis)
+        return u >= {'packed': 1.3, 'down': 1.1, 'up': 1.2}[branch] - 1e-9
 
-    def test_lowers_until_two_collapsed_steps_then_rises_until_two_spouting_steps(self):
-        self.assertEqual(self.schedule(self.bed),
+    def test_packed_branch_rises_until_two_spouting_steps_then_falls_to_a_confirmed_collapse(self):
+        plan = spoutedbed.Schedule(step=0.1, stop=0.8, rise_from=1.0, top=3.0)
+        self.assertEqual(self.schedule(self.bed, plan),
+                         [(1.0, 'packed'), (1.1, 'packed'), (1.2, 'packed'), (1.3, 'packed'),
+                          (1.4, 'packed'), (1.3, 'down'), (1.2, 'down'), (1.1, 'down'),
+                          (1.0, 'down'), (0.9, 'down')])
+
+    def test_with_up_it_rises_again_until_two_spouting_steps(self):
+        plan = spoutedbed.Schedule(step=0.1, stop=0.8, rise_from=1.0, top=3.0, up=True)
+        self.assertEqual(self.schedule(self.bed, plan)[-4:],
+                         [(1.0, 'up'), (1.1, 'up'), (1.2, 'up'), (1.3, 'up')])
+
+    def test_a_bed_that_never_spouts_rises_to_the_top_and_stops(self):
+        plan = spoutedbed.Schedule(step=0.2, stop=0.8, rise_from=2.0, top=3.0)
+        steps = self.schedule(lambda u, b: False, plan)
+        self.assertEqual(steps, [(u, 'packed') for u in (2.0, 2.2, 2.4, 2.6, 2.8, 3.0)])
+
+    def test_a_break_through_at_the_top_still_gets_its_decreasing_branch(self):
+        plan = spoutedbed.Schedule(step=0.5, stop=1.0, rise_from=2.0, top=3.0)
+        steps = self.schedule(lambda u, b: u >= 3.0 if b == 'packed' else u >= 2.0, plan)
+        self.assertEqual(steps, [(2.0, 'packed'), (2.5, 'packed'), (3.0, 'packed'),
+                                 (2.5, 'down'), (2.0, 'down'), (1.5, 'down'), (1.0, 'down')])
+
+    def test_an_intermittent_break_through_must_be_confirmed(self):
+        # spouts at 1.2 once, not at 1.3: the branch keeps rising
+        plan = spoutedbed.Schedule(step=0.1, stop=0.8, rise_from=1.1, top=3.0)
+        steps = self.schedule(lambda u, b: u >= 1.4 or abs(u - 1.2) < 1e-9, plan)
+        self.assertEqual(steps[:5], [(1.1, 'packed'), (1.2, 'packed'), (1.3, 'packed'),
+                                     (1.4, 'packed'), (1.5, 'packed')])
+        self.assertEqual(steps[5], (1.4, 'down'))
+
+    def test_spin_up_start_lowers_from_start_as_before(self):
+        plan = spoutedbed.Schedule(step=0.1, stop=0.8, start=1.5, up=True)
+        self.assertEqual(self.schedule(self.bed, plan),
                          [(1.5, 'down'), (1.4, 'down'), (1.3, 'down'), (1.2, 'down'),
                           (1.1, 'down'), (1.0, 'down'), (0.9, 'down'),
                           (1.0, 'up'), (1.1, 'up'), (1.2, 'up'), (1.3, 'up')])
 
-    def test_a_spout_that_never_collapses_runs_the_whole_range(self):
-        steps = self.schedule(lambda u, b: 0.05)
-        self.assertEqual(steps[7], (0.8, 'down'))
-        self.assertEqual(steps[8:10], [(0.9, 'up'), (1.0, 'up')])
-        self.assertEqual(len(steps), 10)
-
-    def test_without_the_up_branch_it_ends_at_the_confirmed_collapse(self):
-        self.assertEqual(self.schedule(self.bed, up=False)[-1], (0.9, 'down'))
+    def test_a_spout_that_never_collapses_runs_down_to_stop(self):
+        plan = spoutedbed.Schedule(step=0.1, stop=0.8, start=1.5)
+        self.assertEqual(self.schedule(lambda u, b: True, plan)[-1], (0.8, 'down'))
 
     def test_a_large_confirm_runs_the_full_loop(self):
-        steps = self.schedule(self.bed, confirm=100)
+        plan = spoutedbed.Schedule(step=0.1, stop=0.8, start=1.5, up=True, confirm=100)
+        steps = self.schedule(self.bed, plan)
         self.assertEqual((steps[7], steps[-1], len(steps)), ((0.8, 'down'), (1.5, 'up'), 15))
 
-    def test_the_threshold_is_a_fraction_of_the_first_steps_flux(self):
-        # 0.02 m/s is below 25 % of 0.1 m/s: collapsed from 1.3 on
-        steps = self.schedule(lambda u, b: 0.1 if u > 1.35 else 0.02, up=False)
-        self.assertEqual(steps[-1], (1.2, 'down'))
+    def test_a_schedule_needs_one_way_to_begin(self):
+        with self.assertRaises(ValueError):
+            spoutedbed.Schedule(step=0.1, stop=0.8)
+        with self.assertRaises(ValueError):
+            spoutedbed.Schedule(step=0.1, stop=0.8, start=1.5, rise_from=1.0, top=2.0)
+        with self.assertRaises(ValueError):
+            spoutedbed.Schedule(step=0.1, stop=0.8, rise_from=2.0, top=1.5)
 
 
 class ProfileFeatures(unittest.TestCase):
