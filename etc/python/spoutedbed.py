@@ -166,11 +166,25 @@ def field_map(g, centres, values, png, title, label, vmin, vmax, zmax=None):
     os.remove(data)
 
 
+def clipped(segments, zmax):
+    """The parts of segments (x0, z0, x1, z1) at or below zmax."""
+    out = []
+    for x0, z0, x1, z1 in segments:
+        if z0 > z1:
+            x0, z0, x1, z1 = x1, z1, x0, z0
+        if z0 > zmax:
+            continue
+        if z1 > zmax:
+            x1, z1 = x0 + (x1 - x0) * (zmax - z0) / (z1 - z0), zmax
+        out.append((x0, z0, x1, z1))
+    return out
+
+
 def plot_map(g, png, title, label, vmin, vmax, plot, zmax=None):
     import spoutlab_case as sc
     zmax = g.H / 1000 if zmax is None else min(zmax, g.H / 1000)
     arrows = '\n'.join('set arrow from %g,%g to %g,%g nohead lw 2 lc rgb "black" front'
-                       % s for s in outline(g))
+                       % s for s in clipped(outline(g), zmax))
     height = 0.8 * zmax * 1000 / g.W * 600 + 120
     sc.plot(png, '''
 set title "%s"

@@ -136,6 +136,13 @@ class VesselVolume(unittest.TestCase):
                                2 * 0.011 * (0.7 - 0.095) * 0.04, places=12)
 
 
+class ClippedOutline(unittest.TestCase):
+    def test_segments_end_at_the_top_of_the_map(self):
+        segs = [(0, 0, 0, 2), (0, 0, 1, 2), (0, 3, 1, 4), (0, 0.5, 1, 0.5)]
+        self.assertEqual(spoutedbed.clipped(segs, 1.0),
+                         [(0, 0, 0, 1.0), (0, 0, 0.5, 1.0), (0, 0.5, 1, 0.5)])
+
+
 class NextStep(unittest.TestCase):
     """The adaptive schedule, decided from the classifier's verdicts."""
 
