@@ -7,6 +7,7 @@
 #include "FoamParameters.H"
 #include "InputError.hpp"
 #include "OStringStream.H"
+#include "RankGather.H"
 
 #include <algorithm>
 #include <cmath>
@@ -33,45 +34,6 @@ std::string format(double value)
 void sumOverRanks(double* data, std::size_t n)
 {
     MPI_Allreduce(MPI_IN_PLACE, data, int(n), MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
-}
-
-
-// Every rank's values, on every rank (for short lists: lost particle ids)
-std::vector<long> allRanks(const std::vector<long>& local)
-{
-    int nProcs = 1;
-    MPI_Comm_size(MPI_COMM_WORLD, &nProcs);
-    std::vector<int> counts(nProcs), offsets(nProcs, 0);
-    const int mine = int(local.size());
-    MPI_Allgather(&mine, 1, MPI_INT, counts.data(), 1, MPI_INT, MPI_COMM_WORLD);
-    for (int p = 1; p < nProcs; ++p) offsets[p] = offsets[p-1] + counts[p-1];
-    std::vector<long> all(std::size_t(offsets.back() + counts.back()));
-    MPI_Allgatherv
-    (
-        local.data(), mine, MPI_LONG, all.data(), counts.data(), offsets.data(),
-        MPI_LONG, MPI_COMM_WORLD
-    );
-    return all;
-}
-
-
-// Every rank's rows on the master (elsewhere: empty), for output
-std::vector<double> onMaster(const std::vector<double>& local)
-{
-    int nProcs = 1, rank = 0;
-    MPI_Comm_size(MPI_COMM_WORLD, &nProcs);
-    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-    std::vector<int> counts(nProcs), offsets(nProcs, 0);
-    const int mine = int(local.size());
-    MPI_Gather(&mine, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
-    for (int p = 1; p < nProcs; ++p) offsets[p] = offsets[p-1] + counts[p-1];
-    std::vector<double> all(rank == 0 ? std::size_t(offsets.back() + counts.back()) : 0);
-    MPI_Gatherv
-    (
-        local.data(), mine, MPI_DOUBLE, all.data(), counts.data(), offsets.data(),
-        MPI_DOUBLE, 0, MPI_COMM_WORLD
-    );
-    return all;
 }
 
 
@@ -496,7 +458,7 @@ VoidFractionResult DemCoupling::mapParticles()
     // outside the mesh.
     std::vector<long> lost;
     for (const std::size_t i : vf.lostParticles) lost.push_back(particles_[i].id);
-    lost = allRanks(lost);
+    lost = gathered(lost, MPI_COMM_WORLD, true);
     if (!lost.empty())
     {
         std::string ids;
@@ -830,7 +792,7 @@ void DemCoupling::writeParticles()
         );
         if (heat_) rows.insert(rows.end(), {heatFlux_[i], h[i]});
     }
-    rows = onMaster(rows);
+    rows = gathered(rows, MPI_COMM_WORLD, false);
     if (!Foam::Pstream::master()) return;
 
     const std::size_t n = rows.size()/width;

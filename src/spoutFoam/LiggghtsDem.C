@@ -5,6 +5,7 @@
 
 #include "InputError.hpp"
 #include "LiggghtsInputCheck.H"
+#include "RankGather.H"
 
 #include "atom.h"
 #include "comm.h"
@@ -589,19 +590,9 @@ void LiggghtsDem::writeStepState
     const std::string& file, const std::vector<double>& local
 ) const
 {
-    int rank = 0, nProcs = 1;
+    int rank = 0;
     MPI_Comm_rank(comm_, &rank);
-    MPI_Comm_size(comm_, &nProcs);
-    std::vector<int> counts(nProcs), offsets(nProcs, 0);
-    int myCount = int(local.size());
-    MPI_Gather(&myCount, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm_);
-    for (int p = 1; p < nProcs; ++p) offsets[p] = offsets[p-1] + counts[p-1];
-    std::vector<double> all(rank == 0 ? std::size_t(offsets.back() + counts.back()) : 0);
-    MPI_Gatherv
-    (
-        local.data(), myCount, MPI_DOUBLE,
-        all.data(), counts.data(), offsets.data(), MPI_DOUBLE, 0, comm_
-    );
+    const std::vector<double> all = gathered(local, comm_, false);
     if (rank != 0) return;
 
     // a killed run never leaves a truncated state beside a complete restart
