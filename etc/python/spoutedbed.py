@@ -241,6 +241,20 @@ def minimum_spouting(down):
     return collapse
 
 
+def steepest_rise(down):
+    """u_ms by the pressure drop alone, the paper's words taken literally:
+    the step of the decreasing branch after which dP rises most steeply,
+    the largest increase between successive steps.  For a bed whose regime
+    the classifier does not call a spout (minimum_spouting has nothing to
+    read) and as a check on it where it does.  down: (u_s, dP, spouts) in
+    decreasing u_s.  Returns (u_ms, dP_ms, dP one step below) or None if dP
+    never rises."""
+    rises = [(dp_next - dp, u, dp, dp_next)
+             for (u, dp, _), (_, dp_next, _) in zip(down, down[1:])]
+    rise, u, dp, dp_next = max(rises, default=(0.0, None, None, None))
+    return (u, dp, dp_next) if rise > 0 else None
+
+
 def spout_reforms(up):
     """On a rising branch, the first velocity at which the bed spouts:
     (u, dP) or None."""
@@ -299,11 +313,14 @@ class Schedule:
 
     The decreasing branch ('down') runs from one step below the top of the
     rise (or from start) until `confirm` successive steps have collapsed or
-    `stop` is reached; with `up`, u_s then rises again ('up') until `confirm`
+    `stop` is reached; with `descend` it follows the rise whatever the
+    classifier says and runs to `stop` (the paper's full loop, read by dP:
+    steepest_rise); with `up`, u_s then rises again ('up') until `confirm`
     successive steps spout or it is back at the top.  Steps beyond that
     only repeat a confirmed state and cost minutes each."""
 
-    def __init__(self, step, stop, rise_from=None, top=None, start=None, up=False, confirm=2):
+    def __init__(self, step, stop, rise_from=None, top=None, start=None, up=False, confirm=2,
+                 descend=False):
         if (rise_from is None) == (start is None):
             raise ValueError('a schedule begins either on the packed bed (rise_from) or '
                              'after a spin-up (start), not both or neither')
@@ -311,6 +328,7 @@ class Schedule:
             raise ValueError('the packed branch needs a top velocity >= its first, got %r'
                              % top)
         self.step, self.stop, self.up, self.confirm = step, stop, up, confirm
+        self.descend = descend
         self.rise_from, self.start = rise_from, start
         self.top = top if rise_from is not None else start
         self.tol = 1e-6 * step
@@ -339,8 +357,8 @@ class Schedule:
             if u + self.step <= self.top + self.tol:
                 return at(u + self.step), 'packed'
             # at the top: lower it only if it spouts there at all
-            return self.lower(u) if spouts else None
-        if branch == 'down' and streak('down', False) < self.confirm:
+            return self.lower(u) if spouts or self.descend else None
+        if branch == 'down' and (self.descend or streak('down', False) < self.confirm):
             nxt = self.lower(u)
             if nxt:
                 return nxt

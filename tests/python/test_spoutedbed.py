@@ -47,6 +47,22 @@ class MinimumSpouting(unittest.TestCase):
         self.assertIsNone(spoutedbed.minimum_spouting([]))
 
 
+class SteepestRise(unittest.TestCase):
+    """u_ms by the pressure drop alone (the paper's words: the point where
+    dP begins to rise steeply on the decreasing branch), for a bed whose
+    regime the classifier does not call a spout."""
+    down = [(3.0, 1580, False), (2.5, 1640, False), (2.0, 1700, False), (1.9, 1760, False),
+            (1.8, 2900, False), (1.7, 3300, False)]
+
+    def test_u_ms_is_the_step_before_the_largest_rise(self):
+        self.assertEqual(spoutedbed.steepest_rise(self.down), (1.9, 1760, 2900))
+
+    def test_a_falling_or_flat_curve_has_no_rise(self):
+        self.assertIsNone(spoutedbed.steepest_rise([(2.0, 1700, True), (1.9, 1690, True)]))
+        self.assertIsNone(spoutedbed.steepest_rise(self.down[:1]))
+        self.assertIsNone(spoutedbed.steepest_rise([]))
+
+
 class SpoutReforms(unittest.TestCase):
     def test_first_step_spouting_again(self):
         up = [(0.9, 1500, False), (1.0, 1560, False), (1.1, 1600, True), (1.2, 1100, True)]
@@ -184,6 +200,14 @@ class NextStep(unittest.TestCase):
         steps = self.schedule(lambda u, b: u >= 3.0 if b == 'packed' else u >= 2.0, plan)
         self.assertEqual(steps, [(2.0, 'packed'), (2.5, 'packed'), (3.0, 'packed'),
                                  (2.5, 'down'), (2.0, 'down'), (1.5, 'down'), (1.0, 'down')])
+
+    def test_descend_runs_the_full_loop_down_to_stop_whatever_the_classifier_says(self):
+        # the paper's Fig 2: the decreasing branch follows the rise even for a
+        # bed the classifier never calls a spout; u_ms then comes from dP
+        plan = spoutedbed.Schedule(step=0.5, stop=1.5, rise_from=2.0, top=3.0, descend=True)
+        steps = self.schedule(lambda u, b: False, plan)
+        self.assertEqual(steps, [(2.0, 'packed'), (2.5, 'packed'), (3.0, 'packed'),
+                                 (2.5, 'down'), (2.0, 'down'), (1.5, 'down')])
 
     def test_an_intermittent_break_through_must_be_confirmed(self):
         # spouts at 1.2 once, not at 1.3: the branch keeps rising
