@@ -313,14 +313,15 @@ class Schedule:
 
     The decreasing branch ('down') runs from one step below the top of the
     rise (or from start) until `confirm` successive steps have collapsed or
-    `stop` is reached; with `descend` it follows the rise whatever the
-    classifier says and runs to `stop` (the paper's full loop, read by dP:
+    `stop` is reached; with `full_loop` the rise goes on to `top` and the
+    fall to `stop` whatever the classifier says (the paper's whole Fig 2
+    loop, a schedule the classifier's verdicts cannot change, read by dP:
     steepest_rise); with `up`, u_s then rises again ('up') until `confirm`
     successive steps spout or it is back at the top.  Steps beyond that
     only repeat a confirmed state and cost minutes each."""
 
     def __init__(self, step, stop, rise_from=None, top=None, start=None, up=False, confirm=2,
-                 descend=False):
+                 full_loop=False):
         if (rise_from is None) == (start is None):
             raise ValueError('a schedule begins either on the packed bed (rise_from) or '
                              'after a spin-up (start), not both or neither')
@@ -328,7 +329,7 @@ class Schedule:
             raise ValueError('the packed branch needs a top velocity >= its first, got %r'
                              % top)
         self.step, self.stop, self.up, self.confirm = step, stop, up, confirm
-        self.descend = descend
+        self.full_loop = full_loop
         self.rise_from, self.start = rise_from, start
         self.top = top if rise_from is not None else start
         self.tol = 1e-6 * step
@@ -352,13 +353,13 @@ class Schedule:
 
         u, branch, spouts = done[-1]
         if branch == 'packed':
-            if streak('packed', True) >= self.confirm:
+            if streak('packed', True) >= self.confirm and not self.full_loop:
                 return self.lower(u)
             if u + self.step <= self.top + self.tol:
                 return at(u + self.step), 'packed'
             # at the top: lower it only if it spouts there at all
-            return self.lower(u) if spouts or self.descend else None
-        if branch == 'down' and (self.descend or streak('down', False) < self.confirm):
+            return self.lower(u) if spouts or self.full_loop else None
+        if branch == 'down' and (self.full_loop or streak('down', False) < self.confirm):
             nxt = self.lower(u)
             if nxt:
                 return nxt

@@ -201,13 +201,15 @@ class NextStep(unittest.TestCase):
         self.assertEqual(steps, [(2.0, 'packed'), (2.5, 'packed'), (3.0, 'packed'),
                                  (2.5, 'down'), (2.0, 'down'), (1.5, 'down'), (1.0, 'down')])
 
-    def test_descend_runs_the_full_loop_down_to_stop_whatever_the_classifier_says(self):
-        # the paper's Fig 2: the decreasing branch follows the rise even for a
-        # bed the classifier never calls a spout; u_ms then comes from dP
-        plan = spoutedbed.Schedule(step=0.5, stop=1.5, rise_from=2.0, top=3.0, descend=True)
-        steps = self.schedule(lambda u, b: False, plan)
-        self.assertEqual(steps, [(2.0, 'packed'), (2.5, 'packed'), (3.0, 'packed'),
-                                 (2.5, 'down'), (2.0, 'down'), (1.5, 'down')])
+    def test_the_full_loop_is_the_same_whatever_the_classifier_says(self):
+        # the paper's Fig 2 read by dP: up to the top and down to the stop,
+        # for a bed that never spouts, always spouts or breaks through early
+        expected = [(2.0, 'packed'), (2.5, 'packed'), (3.0, 'packed'),
+                    (2.5, 'down'), (2.0, 'down'), (1.5, 'down')]
+        for bed in (lambda u, b: False, lambda u, b: True, self.bed):
+            plan = spoutedbed.Schedule(step=0.5, stop=1.5, rise_from=2.0, top=3.0,
+                                       full_loop=True)
+            self.assertEqual(self.schedule(bed, plan), expected)
 
     def test_an_intermittent_break_through_must_be_confirmed(self):
         # spouts at 1.2 once, not at 1.3: the branch keeps rising
