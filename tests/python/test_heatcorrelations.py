@@ -7,9 +7,9 @@ import sys
 import tempfile
 import unittest
 
-sys.path.insert(0, os.path.join(os.path.dirname(__file__), '..', '..', 'etc', 'python'))
-import heatcorrelations as hc  # noqa: E402
-import spoutlab_case as sc  # noqa: E402
+sys.path.insert(0, os.path.join(os.environ.get('SPOUTLAB_DIR', '../..'), 'etc', 'python'))
+from spoutlab import heatcorrelations as hc  # noqa: E402
+from spoutlab import casefiles as sc  # noqa: E402
 
 # air as in the C++ hand values (tests/unit/test_HeatTransfer.cpp)
 AIR = dict(rho=1.0324, mu=2.029e-5, cp=1008.6, kappa=0.02917)

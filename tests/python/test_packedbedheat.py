@@ -11,8 +11,8 @@ from scipy.integrate import quad
 from scipy.special import i0
 from scipy.stats import ncx2
 
-sys.path.insert(0, os.path.join(os.path.dirname(__file__), '..', '..', 'etc', 'python'))
-import packedbedheat as pb  # noqa: E402
+sys.path.insert(0, os.path.join(os.environ.get('SPOUTLAB_DIR', '../..'), 'etc', 'python'))
+from spoutlab import packedbedheat as pb  # noqa: E402
 
 # the verification case: 8 mm particles with a heat capacity made small so
 # that the front crosses the bed in seconds

@@ -6,8 +6,8 @@ import os
 import sys
 import unittest
 
-sys.path.insert(0, os.path.join(os.path.dirname(__file__), '..', '..', 'etc', 'python'))
-import spoutedbed  # noqa: E402
+sys.path.insert(0, os.path.join(os.environ.get('SPOUTLAB_DIR', '../..'), 'etc', 'python'))
+from spoutlab import spoutedbed  # noqa: E402
 
 
 class KudraEq12(unittest.TestCase):

@@ -11,9 +11,9 @@ import random
 import sys
 import unittest
 
-sys.path.insert(0, os.path.join(os.path.dirname(__file__), '..', '..', 'etc', 'python'))
-import spoutedbed  # noqa: E402
-import spoutregime as sr  # noqa: E402
+sys.path.insert(0, os.path.join(os.environ.get('SPOUTLAB_DIR', '../..'), 'etc', 'python'))
+from spoutlab import spoutedbed  # noqa: E402
+from spoutlab import spoutregime as sr  # noqa: E402
 
 CASE = os.path.join(os.path.dirname(__file__), '..', '..', 'openfoam_cases', 'spoutDraftPlates')
 R = 0.004                      # particle radius [m]

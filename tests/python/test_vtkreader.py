@@ -14,9 +14,9 @@ import sys
 import tempfile
 import unittest
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..', 'etc', 'python'))
-import mixing  # noqa: E402
-import spoutlab_case as sc  # noqa: E402
+sys.path.insert(0, os.path.join(os.environ.get('SPOUTLAB_DIR', '../..'), 'etc', 'python'))
+from spoutlab import mixing  # noqa: E402
+from spoutlab import casefiles as sc  # noqa: E402
 
 COUNT = 5000
 

@@ -16,7 +16,7 @@ import re
 
 import numpy as np
 
-import spoutlab_case as sc
+from spoutlab import casefiles as sc
 
 
 def sphere_slice(zc, r, a, b):

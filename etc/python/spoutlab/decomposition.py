@@ -19,8 +19,7 @@ import argparse
 import os
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import spoutlab_case as sc  # noqa: E402
+from spoutlab import casefiles as sc
 
 
 def slab_cuts(x, n):
@@ -67,7 +66,7 @@ def write(case, n):
         f.write('\n)\n')
     with open(os.path.join(case, 'system', 'decomposeParDict'), 'w') as f:
         f.write(header % ('dictionary', 'system', 'decomposeParDict'))
-        f.write('// written by etc/python/decomposition.py: x-slabs, as LIGGGHTS\n'
+        f.write('// written by spoutlab.decomposition: x-slabs, as LIGGGHTS\n'
                 '// decomposes its box (processors * 1 1)\n'
                 'numberOfSubdomains %d;\nmethod          manual;\n'
                 'coeffs\n{\n    dataFile    "cellDecomposition";\n}\n' % n)

@@ -60,8 +60,7 @@ import os
 import re
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import spoutlab_case as sc  # noqa: E402
+from spoutlab import casefiles as sc
 
 SPLITS = ('left-right', 'lower-upper')
 DEFAULT_SPLIT = 'left-right'

@@ -137,7 +137,7 @@ def snapshot(g, vtp, png, title, vmax=1.0, field='velocity', vmin=None,
     """Particles of one .vtp as discs in the x-z plane, coloured by their
     vertical velocity (like the papers' flow-pattern snapshots) or by
     another per-particle scalar (field='temperature', with vmin, vmax)."""
-    import spoutlab_case as sc
+    from spoutlab import casefiles as sc
     points = sc.read_vtp_points(vtp)
     radii = sc.read_vtp_array(vtp, 'radius')
     values = sc.read_vtp_array(vtp, field)
@@ -181,7 +181,7 @@ def clipped(segments, zmax):
 
 
 def plot_map(g, png, title, label, vmin, vmax, plot, zmax=None):
-    import spoutlab_case as sc
+    from spoutlab import casefiles as sc
     zmax = g.H / 1000 if zmax is None else min(zmax, g.H / 1000)
     arrows = '\n'.join('set arrow from %g,%g to %g,%g nohead lw 2 lc rgb "black" front'
                        % s for s in clipped(outline(g), zmax))
@@ -385,9 +385,9 @@ def bed_spouts(g, case, t0, t1):
     the window), with its default spout region for the vessel.  The one
     place the protocols ask; returns the classifier's Verdict (.spouts,
     .describe())."""
-    import mixing
-    import spoutlab_case as sc
-    import spoutregime
+    from spoutlab import mixing
+    from spoutlab import casefiles as sc
+    from spoutlab import spoutregime
     region = spoutregime.SpoutRegion.of(g)
     snapshots = []
     for t, path in mixing.particle_files(case):
@@ -404,7 +404,7 @@ def settled_bed(g, vtp):
     surface do not count); the voidage is that of the vessel below half
     of it, clear of the uneven surface (with plates, the spout and the
     downcomers settle to different levels), walls and base included."""
-    import spoutlab_case as sc
+    from spoutlab import casefiles as sc
     z = [p[2] for p in sc.read_vtp_points(vtp)]
     r = sc.read_vtp_array(vtp, 'radius')
     height = sorted(z)[int(0.99 * (len(z) - 1))] + max(r)
@@ -594,7 +594,7 @@ def run_particles(case='.'):
     """(number, source) of the particles a run had at its start: counted in
     its first particles/*.vtp, else the first row of postProcessing/
     coupling.csv; (None, None) before a run."""
-    import spoutlab_case as sc
+    from spoutlab import casefiles as sc
     folder = os.path.join(case, 'particles')
     if os.path.isdir(folder):
         vtps = sorted((f for f in os.listdir(folder)

@@ -16,9 +16,9 @@ upper edge); without plates, by the voidage of the cell.
 import math
 import os
 
-import heatcorrelations as hc
-import spoutlab_case as sc
-import spoutedbed
+from spoutlab import heatcorrelations as hc
+from spoutlab import casefiles as sc
+from spoutlab import spoutedbed
 
 BAND = (16.927, 22.454)   # z/R_d of Fig 12
 

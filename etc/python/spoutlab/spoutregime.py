@@ -217,8 +217,8 @@ def mean_core_ratio(snapshots):
 def classify_case(g, case='.', start=0.0, region=None):
     """Verdict over the particle files particles/particles_<t>.vtp with
     t >= start."""
-    import mixing
-    import spoutlab_case as sc
+    from spoutlab import mixing
+    from spoutlab import casefiles as sc
     region = region or SpoutRegion.of(g)
     snapshots = []
     for t, path in mixing.particle_files(case):
@@ -279,8 +279,8 @@ def region_from_text(text, g, what):
 
 
 if __name__ == '__main__':
-    # stand-alone use: spoutregime.py [CASE]
+    # stand-alone use: python3 -m spoutlab.spoutregime [CASE]
     import sys
-    import spoutedbed
+    from spoutlab import spoutedbed
     case = sys.argv[1] if len(sys.argv) > 1 else '.'
     print(classify_case(spoutedbed.load(case), case).describe())

@@ -1,4 +1,3 @@
-#!/usr/bin/env python3
 """Protocols (c) and (d) of the draft-plate paper, section 4.4: the particle
 circulation rate W_s (eq 14) against the gas velocity for two entrance
 heights (eq 15, Fig 6), and against the friction coefficient at u_ms
@@ -27,8 +26,7 @@ import shutil
 import subprocess
 import sys
 
-sys.path.insert(0, os.path.join(os.environ.get('SPOUTLAB_DIR', '../..'), 'etc', 'python'))
-import spoutlab_case as sc  # noqa: E402
+from spoutlab import casefiles as sc
 
 
 def eq15(u, He):

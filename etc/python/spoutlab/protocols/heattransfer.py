@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 """Section 4.7 of the draft-plate paper: hot air through the spouted bed with
 draft plates.  The bed spouts at u_s = 2.0 m/s with inlet air at 150 C; bed
 and air start at 33 C; c_p,p = 2400 J/kg/K (system/spoutedBedDict).
@@ -26,9 +25,8 @@ import subprocess
 import sys
 import time
 
-sys.path.insert(0, os.path.join(os.environ.get('SPOUTLAB_DIR', '../..'), 'etc', 'python'))
-import spoutedbed  # noqa: E402
-import spoutheat  # noqa: E402
+from spoutlab import spoutedbed
+from spoutlab import spoutheat
 
 PAPER = {'Re_spout': 5690, 'Re_downcomer': 130}
 

@@ -1,4 +1,3 @@
-#!/usr/bin/env python3
 """The minimum spouting velocity and the pressure-drop loop of Fig 2, as the
 papers ran it (draft-plate paper section 4.1, no-draft paper 'Minimum
 spouting velocity'), for the vessel with or without draft plates.
@@ -57,10 +56,9 @@ import os
 import subprocess
 import sys
 
-sys.path.insert(0, os.path.join(os.environ.get('SPOUTLAB_DIR', '../..'), 'etc', 'python'))
-import mixing  # noqa: E402
-import spoutlab_case as sc  # noqa: E402
-import spoutedbed  # noqa: E402
+from spoutlab import mixing
+from spoutlab import casefiles as sc
+from spoutlab import spoutedbed
 
 # the papers' simulated u_ms [m/s] and dP_ms [kPa] by vessel and particles
 PAPER = {('plates', 26000): (1.25, 1.40), ('no-plates', 10000): (2.0, 1.75)}

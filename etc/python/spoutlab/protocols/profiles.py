@@ -1,4 +1,3 @@
-#!/usr/bin/env python3
 """Protocol (b) of the draft-plate paper, sections 4.2-4.3: time-averaged
 particle velocity and voidage across the spout (Fig 4) and downward
 particle velocity across the downcomers (Fig 5) at u_s = 1.40 m/s, and the
@@ -16,31 +15,19 @@ Results: profiles.txt (the paper's features, lower vs upper region) and, per
 velocity, profiles_u<u>_{spoutVelocity,spoutVoidage,downcomerVelocity}.png
 and the CSV files of the run.
 """
-import importlib.machinery
-import importlib.util
 import os
 import shutil
 import sys
 
-sys.path.insert(0, os.path.join(os.environ.get('SPOUTLAB_DIR', '../..'), 'etc', 'python'))
-import spoutedbed  # noqa: E402
+from spoutlab import spoutedbed
+from spoutlab.protocols import circulation as circ
 
-
-def circulation_module():
-    """protocols/circulation, whose run machinery this protocol shares."""
-    path = os.path.join(os.path.dirname(os.path.abspath(__file__)), 'circulation')
-    loader = importlib.machinery.SourceFileLoader('circulation', path)
-    spec = importlib.util.spec_from_loader('circulation', loader)
-    module = importlib.util.module_from_spec(spec)
-    loader.exec_module(module)
-    return module
 
 
 def main(argv):
     if argv and argv[0] in ('-h', '--help'):
         print(__doc__)
         return 0
-    circ = circulation_module()
     o = circ.parse(['velocity'] + argv)
     if '--u' not in argv:
         o['u'] = [1.4, 2.0]

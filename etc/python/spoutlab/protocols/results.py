@@ -1,4 +1,3 @@
-#!/usr/bin/env python3
 """Collect the protocol outputs into docs/RESULTS.md and docs/results.csv:
 SpoutLab's values beside the draft-plate paper's, with the settings and wall
 time of the run that produced each.
@@ -28,8 +27,7 @@ import re
 import shutil
 import sys
 
-sys.path.insert(0, os.path.join(os.environ.get('SPOUTLAB_DIR', '../..'), 'etc', 'python'))
-import spoutedbed  # noqa: E402
+from spoutlab import spoutedbed
 
 
 def wall_time(case):

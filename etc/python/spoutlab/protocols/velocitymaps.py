@@ -1,4 +1,3 @@
-#!/usr/bin/env python3
 """The no-draft paper's Figs 3 and 4: time-averaged gas velocity U_z and
 particle velocity V_z over the bed without draft plates, at u_s = 2.0 m/s
 (10 000 particles) and 2.2 m/s (26 000), as maps and as profiles across the
@@ -18,30 +17,19 @@ maps_<label>_profiles.png and maps_<label>_profiles.csv (profiles across the
 width every 5 gas cells, 95 mm, of height up to the settled bed).
 """
 import concurrent.futures
-import importlib.machinery
-import importlib.util
 import math
 import os
 import sys
 
-sys.path.insert(0, os.path.join(os.environ.get('SPOUTLAB_DIR', '../..'), 'etc', 'python'))
-import spoutlab_case as sc  # noqa: E402
-import spoutedbed  # noqa: E402
+from spoutlab import casefiles as sc
+from spoutlab import spoutedbed
+from spoutlab.protocols import circulation as circ
 
 # a cell holds particles in the time average when its mean solid fraction
 # is above this (a fiftieth of a packed bed's): V_z is drawn there only
 SOLID_PRESENT = 0.01
 SYMMETRIC = 0.2     # mean |U_z(x) - U_z(-x)| below this fraction of mean |U_z|
 
-
-def circulation_module():
-    """protocols/circulation, whose run machinery this protocol shares."""
-    path = os.path.join(os.path.dirname(os.path.abspath(__file__)), 'circulation')
-    loader = importlib.machinery.SourceFileLoader('circulation', path)
-    spec = importlib.util.spec_from_loader('circulation', loader)
-    module = importlib.util.module_from_spec(spec)
-    loader.exec_module(module)
-    return module
 
 
 def parse(argv):
@@ -194,7 +182,6 @@ plot %s
 
 def main(argv):
     o = parse(argv)
-    circ = circulation_module()
     points = [('noplates_n%d_u%g' % (n, u), n, u) for n, u in o['points']]
     settled = {}
 

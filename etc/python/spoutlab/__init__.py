@@ -1,0 +1,34 @@
+"""SpoutLab's case layer: what the case scripts (openfoam_cases/*/evaluate,
+generate, inletVelocity), the spouted bed's protocols and the tests share.
+
+  casefiles         what a run writes: function-object .dat files, fields,
+                    coupling.csv, the particle .vtp files; gnuplot
+                    pictures and the checks table of the evaluate scripts
+  spoutedbed        the slanted-base vessel of spoutDraftPlates and the
+                    protocols' rules (u_ms, the schedule, the settled bed)
+  spoutregime       the spout classifier
+  mixing            the degree of mixing (eqs 17-19, Lacey)
+  spoutheat         the heat-transfer post-processing of the spouted bed
+  heatcorrelations, packedbedheat, draglaws, bedlayers
+                    the analytic references of the verification cases
+  decomposition     x-slabs for parallel coupled runs
+  protocols         the papers' protocols; openfoam_cases/spoutDraftPlates/
+                    protocols/<name> are their commands
+
+Finding the package: every script puts <repository>/etc/python first on
+sys.path, the repository being $SPOUTLAB_DIR (etc/bashrc sets it; the case
+scripts source etc/caseFunctions, which sources it) or, without it, two
+levels above the working directory -- a case directory under
+openfoam_cases/:
+
+    sys.path.insert(0, os.path.join(os.environ.get('SPOUTLAB_DIR', '../..'),
+                                    'etc', 'python'))
+    from spoutlab import spoutedbed
+
+etc/bashrc also puts etc/python on PYTHONPATH, so that the modules with a
+command line run as /usr/bin/python3 -m spoutlab.mixing CASE (and
+spoutlab.decomposition, spoutlab.spoutregime).
+
+Standard library only, except bedlayers and packedbedheat (numpy, scipy:
+Debian's /usr/bin/python3).
+"""
