@@ -1,8 +1,10 @@
 """SpoutLab's case layer: what the case scripts (openfoam_cases/*/evaluate,
 generate, inletVelocity), the spouted bed's protocols and the tests share.
 
-  casefiles         what a run writes: function-object .dat files, fields,
-                    coupling.csv, the particle .vtp files; gnuplot
+  foamfile          OpenFOAM dictionaries (#include, $variables), fields and
+                    tables: the one reader of OpenFOAM's files
+  casefiles         what a run writes besides them: function-object .dat
+                    files, coupling.csv, the particle .vtp files; gnuplot
                     pictures and the checks table of the evaluate scripts
   spoutedbed        the slanted-base vessel of spoutDraftPlates and the
                     protocols' rules (u_ms, the schedule, the settled bed)

@@ -12,11 +12,10 @@ Needs numpy (/usr/bin/python3).
 """
 import math
 import os
-import re
 
 import numpy as np
 
-from spoutlab import casefiles as sc
+from spoutlab import foamfile
 
 
 def sphere_slice(zc, r, a, b):
@@ -34,9 +33,7 @@ def centre_share(zc, r, a, b):
 
 
 def void_fraction_model(path='constant/couplingProperties'):
-    text = re.sub(r'//.*', '', re.sub(r'/\*.*?\*/', '', open(path).read(), flags=re.S))
-    m = re.search(r'(?:^|[\s;])voidFractionModel\s+(\w+)\s*;', text)
-    name = m.group(1) if m else None
+    name = foamfile.entry(path, 'voidFractionModel', None)
     if name not in ('divided', 'centre'):
         raise SystemExit("%s: key 'voidFractionModel' expected divided or centre, got '%s'"
                          % (path, name))
@@ -50,8 +47,8 @@ class Column:
     volume of its cells, area the cross-section."""
 
     def __init__(self, case='.'):
-        zc = np.array([c[2] for c in sc.read_field(os.path.join(case, '0', 'C'))])
-        volumes = np.array(sc.read_field(os.path.join(case, '0', 'V')))
+        zc = np.array([c[2] for c in foamfile.read_field(os.path.join(case, '0', 'C'))])
+        volumes = np.array(foamfile.read_field(os.path.join(case, '0', 'V')))
         # cells of one layer share their centre height (to round-off)
         levels = np.unique(np.round(zc, 9))
         layer = np.searchsorted(levels, np.round(zc, 9))

@@ -1,5 +1,6 @@
 """Helpers for the case evaluate scripts: read what spoutFoam and OpenFOAM
-function objects write, draw PNG plots with gnuplot, and report checks.
+function objects write (fields and dictionaries: foamfile), draw PNG plots
+with gnuplot, and report checks.
 
 Standard library only, so a fresh machine needs nothing beyond python3.
 """
@@ -230,41 +231,6 @@ class Checks:
 def solve_quadratic_positive(a, b, c):
     """Positive root of a x^2 + b x + c = 0 (a > 0, c < 0)."""
     return (-b + math.sqrt(b * b - 4 * a * c)) / (2 * a)
-
-
-def read_field(path):
-    """internalField of an ASCII OpenFOAM volume field: a list of floats or
-    of (x, y, z) tuples ('uniform' values are returned as one-element lists)."""
-    text = open(path).read()
-    m = re.search(r'internalField\s+uniform\s+([^;]+);', text)
-    if m:
-        value = m.group(1).strip()
-        if value.startswith('('):
-            return [tuple(float(v) for v in value.strip('()').split())]
-        return [float(value)]
-    m = re.search(r'internalField\s+nonuniform\s+List<(\w+)>\s*(\d+)\s*\((.*?)\)\s*;',
-                  text, re.S)
-    kind, n, body = m.group(1), int(m.group(2)), m.group(3)
-    if kind == 'scalar':
-        values = [float(v) for v in body.split()]
-    else:
-        numbers = [float(v) for v in body.replace('(', ' ').replace(')', ' ').split()]
-        values = [tuple(numbers[i:i + 3]) for i in range(0, len(numbers), 3)]
-    if len(values) != n:
-        raise ValueError('%s: expected %d values, read %d' % (path, n, len(values)))
-    return values
-
-
-def latest_time(case='.'):
-    """The newest time directory of a case (as its name)."""
-    times = []
-    for name in os.listdir(case):
-        try:
-            if name != '0.orig' and os.path.isdir(os.path.join(case, name)):
-                times.append((float(name), name))
-        except ValueError:
-            pass
-    return max(times)[1]
 
 
 def moving_average(times, values, window):

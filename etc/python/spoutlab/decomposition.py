@@ -19,7 +19,7 @@ import argparse
 import os
 import sys
 
-from spoutlab import casefiles as sc
+from spoutlab import foamfile
 
 
 def slab_cuts(x, n):
@@ -53,7 +53,7 @@ def ranks(x, cuts):
 
 
 def write(case, n):
-    centres = sc.read_field(os.path.join(case, '0', 'C'))
+    centres = foamfile.read_field(os.path.join(case, '0', 'C'))
     x = [c[0] for c in centres]
     cuts = slab_cuts(x, n)
     owner = ranks(x, cuts)

@@ -3,18 +3,15 @@ case's system/spoutedBedDict, shared by the case's generate script and its
 post-processing (snapshots, profiles)."""
 import math
 import os
-import re
 import sys
 
 
 def read_dict(path, overrides):
-    values = {}
-    text = re.sub(r'/\*.*?\*/', '', open(path).read(), flags=re.S)
-    for line in text.splitlines():
-        line = line.split('//')[0].strip()
-        m = re.match(r'^(\w+)\s+([^;{}]+);$', line)
-        if m and m.group(1) != 'FoamFile':
-            values[m.group(1)] = m.group(2).strip()
+    """The vessel's dictionary (its entries outside FoamFile, in file order)
+    with the command line's key=value overrides applied."""
+    from spoutlab import foamfile
+    values = {k: v for k, v in foamfile.read(path).items()
+              if k != 'FoamFile' and isinstance(v, str)}
     for item in overrides:
         key, _, value = item.partition('=')
         if key not in values:
@@ -614,9 +611,9 @@ def inlet_schedule(g, case='.'):
     """The superficial velocity u_s against time as constant/inletVelocity
     sets it: [(u_s, t_from, t_to)], t_to None for the last; the slot
     velocity of the table times Wi/W."""
-    text = open(os.path.join(case, 'constant', 'inletVelocity')).read()
-    table = [(float(t), float(v) * g.Wi / g.W) for t, v in
-             re.findall(r'\(\s*([-+.\deE]+)\s*\(\s*\S+\s+\S+\s+([-+.\deE]+)\s*\)\s*\)', text)]
+    from spoutlab import foamfile
+    table = [(t, v[2] * g.Wi / g.W) for t, v in
+             foamfile.read_table(os.path.join(case, 'constant', 'inletVelocity'))]
     steps = []
     for t, u in table:
         if steps and abs(steps[-1][0] - u) < 1e-9:
@@ -638,6 +635,7 @@ def describe_schedule(steps):
 
 def average_start(case='.'):
     """timeStart of the averages function object of system/controlDict."""
-    text = open(os.path.join(case, 'system', 'controlDict')).read()
-    m = re.search(r'\baverages\s*\{[^}]*?\btimeStart\s+([-+.\deE]+)\s*;', text, re.S)
-    return float(m.group(1)) if m else None
+    from spoutlab import foamfile
+    value = foamfile.entry(os.path.join(case, 'system', 'controlDict'),
+                           'functions/averages/timeStart', None)
+    return float(value) if value is not None else None

@@ -18,6 +18,7 @@ import os
 
 from spoutlab import heatcorrelations as hc
 from spoutlab import casefiles as sc
+from spoutlab import foamfile
 from spoutlab import spoutedbed
 
 BAND = (16.927, 22.454)   # z/R_d of Fig 12
@@ -60,7 +61,7 @@ def particle_history(g, case='.'):
 
 def read_samples(names, case='.'):
     """(hp, Rep) cell fields of the write times `names`, each read once."""
-    return [(sc.read_field(os.path.join(case, n, 'hp')), sc.read_field(os.path.join(case, n, 'Rep')))
+    return [(foamfile.read_field(os.path.join(case, n, 'hp')), foamfile.read_field(os.path.join(case, n, 'Rep')))
             for n in names]
 
 
@@ -177,7 +178,7 @@ unset multiplot
 
 def snapshots(g, names, case='.'):
     """Fig 11: particles and gas coloured by temperature at the given times."""
-    centres = sc.read_field(os.path.join(case, '0', 'C'))
+    centres = foamfile.read_field(os.path.join(case, '0', 'C'))
     vtps = {n: os.path.join(case, 'particles', 'particles_%s.vtp' % n) for n in names}
     vtps = {n: v for n, v in vtps.items() if os.path.isfile(v)}
     # particles warm by a few kelvin in seconds: a scale from T_0 to the
@@ -192,7 +193,7 @@ def snapshots(g, names, case='.'):
                                 label='particle temperature [K]')
             pictures.append(png)
         png = 'gasTemperature_%s.png' % name
-        spoutedbed.field_map(g, centres, sc.read_field(os.path.join(case, name, 'T')), png,
+        spoutedbed.field_map(g, centres, foamfile.read_field(os.path.join(case, name, 'T')), png,
                              'gas, t = %s s' % name, 'gas temperature [K]', g.T0, g.Tin)
         pictures.append(png)
     return pictures
@@ -208,7 +209,7 @@ def summarize(g, window, lines, case='.', pictures=True):
     times = write_times(case)
     end = times[-1][0]
     averaged = [n for t, n in times if t >= end - window - 1e-9 and t > 0]
-    centres = sc.read_field(os.path.join(case, '0', 'C'))
+    centres = foamfile.read_field(os.path.join(case, '0', 'C'))
     samples = read_samples(averaged, case)
     profile, means = band_profiles(g, centres, samples)
     if plot_profiles(profile, 'heatTransfer.png'):

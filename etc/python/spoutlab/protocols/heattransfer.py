@@ -25,6 +25,7 @@ import subprocess
 import sys
 import time
 
+from spoutlab import foamfile
 from spoutlab import spoutedbed
 from spoutlab import spoutheat
 
@@ -80,8 +81,7 @@ def run(o, work):
         spoutedbed.prepare_case(overrides, 'heatTransfer')
         subprocess.check_call(['./inletVelocity', '%g' % o['u']])
         setting('endTime', '%g' % o['time'])
-        dt = float(subprocess.check_output(['foamDictionary', '-entry', 'deltaT', '-value',
-                                            'system/controlDict']).split()[-1])
+        dt = foamfile.scalar('system/controlDict', 'deltaT')
         setting('writeInterval', '%.10g' % (max(1, round(o['write'] / dt)) * dt))
         setting('functions.averages.timeStart', '%g' % (o['time'] - o['average']))
         if (spoutedbed.last_time('log.spoutFoam') or 0.0) < o['time'] - 1e-3:

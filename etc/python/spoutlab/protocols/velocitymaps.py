@@ -22,6 +22,8 @@ import os
 import sys
 
 from spoutlab import casefiles as sc
+
+from spoutlab import foamfile
 from spoutlab import spoutedbed
 from spoutlab.protocols import circulation as circ
 
@@ -67,12 +69,12 @@ class Fields:
     """The time-averaged cell fields of a finished run."""
 
     def __init__(self, work):
-        time = sc.latest_time(work)
+        time = foamfile.latest_time(work)
         self.g = spoutedbed.load(work)
-        self.centres = sc.read_field(os.path.join(work, '0', 'C'))
-        U = sc.read_field(os.path.join(work, time, 'UMean'))
-        flux = sc.read_field(os.path.join(work, time, 'solidFluxMean'))
-        phi = sc.read_field(os.path.join(work, time, 'solidFractionMean'))
+        self.centres = foamfile.read_field(os.path.join(work, '0', 'C'))
+        U = foamfile.read_field(os.path.join(work, time, 'UMean'))
+        flux = foamfile.read_field(os.path.join(work, time, 'solidFluxMean'))
+        phi = foamfile.read_field(os.path.join(work, time, 'solidFractionMean'))
         self.Uz = [u[2] for u in U]
         self.Vz = [f[2] / p if p > SOLID_PRESENT else float('nan') for f, p in zip(flux, phi)]
         self.bed, _ = spoutedbed.settled_bed(self.g, os.path.join(work, 'particles',
