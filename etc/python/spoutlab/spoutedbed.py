@@ -521,20 +521,15 @@ def profile_features(spout, downcomer, split=12.0):
 # --- running the case from a protocol ----------------------------------------
 
 def prepare_case(overrides, who, probes_only=False):
-    """Generate, mesh and settle the case in the working directory; skipped
-    when a mesh and a settled bed are there already (a protocol continuing)."""
+    """Mesh (the case's Allmesh) and settle the case in the working
+    directory; skipped when a mesh and a settled bed are there already (a
+    protocol continuing)."""
     import subprocess
     if os.path.isdir('constant/polyMesh') and os.path.isfile('DEM/settled.restart'):
         return
     script = '''set -e
 . "$SPOUTLAB_DIR/etc/caseFunctions"
-./generate %s > log.generate
-rm -rf 0
-runApplication blockMesh
-runApplication topoSet
-runApplication subsetMesh gas -patch walls -overwrite
-restore0Dir
-runApplication postProcess -func writeCellCentres -time 0
+./Allmesh %s
 settleParticles "$SPOUTLAB_DIR/liggghts_inputs/spoutDraftPlates/in.settle"
 ''' % ' '.join(overrides)
     if probes_only:
