@@ -10,15 +10,9 @@ that differ only in u_s share one settled bed.  Finished runs are kept, so
 running the command again after an interruption continues with the missing
 points (an interrupted one starts again, on its settled bed if it had one).
 
-usage (in the case directory):
-  circulation velocity [--He 95,152] [--u 1.4,1.6,1.8,2.0,2.2] [options]
-  circulation friction [--mu 0.02,0.063,0.1,0.2,0.3] [--u 1.25] [options]
-options: --time T (default 4), --average T (default 1.8),
-         --kick U,T spin-up velocity and time (default 2.0,1.0), -n N, -np RANKS,
-         -j JOBS runs side by side (default 1; on 2 cores: -j 2),
-         key=value (overrides of system/spoutedBedDict for every run)
 Results: circulation_<study>.csv / .png / .txt
 """
+import argparse
 import concurrent.futures
 import math
 import os
@@ -27,6 +21,7 @@ import subprocess
 import sys
 
 from spoutlab import casefiles as sc
+from spoutlab import cli
 
 
 def eq15(u, He):
@@ -39,35 +34,50 @@ def eq16(mu):
     return 10 ** (-3.25 * mu - 0.194)
 
 
+def whole(text):
+    """A whole number, kept as written (it goes to the case's Allrun)."""
+    try:
+        int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError('expected a whole number, got %r' % text)
+    return text
+
+
+def run_options(p, kick='2.0,1.0', particles=True):
+    """The options of a run of the case, shared by the protocols that make
+    their points with run_point (circulation, profiles, velocityMaps)."""
+    p.add_argument('--time', type=float, default=4.0, metavar='T',
+                   help='simulated time of each run [s] (default %(default)s)')
+    p.add_argument('--average', type=float, default=1.8, metavar='T',
+                   help='averaging window at the end of each run [s] (default %(default)s)')
+    p.add_argument('--kick', type=cli.pair, default=kick, metavar='U,T',
+                   help='spin-up velocity [m/s] and time [s] that break the packed bed '
+                        'through (default %(default)s)')
+    if particles:
+        p.add_argument('-n', type=whole, help='particles (default: system/spoutedBedDict)')
+    p.add_argument('-np', type=int, default=1, metavar='RANKS', help='MPI ranks per run')
+    p.add_argument('-j', '--jobs', type=int, default=1, metavar='JOBS',
+                   help='runs side by side (default 1; on 2 cores: -j 2)')
+    cli.add_overrides(p, 'system/spoutedBedDict for every run')
+
+
 def parse(argv):
-    if not argv or argv[0] not in ('velocity', 'friction'):
-        print(__doc__)
-        sys.exit(2)
-    o = dict(study=argv[0], He=[95, 152], u=[1.4, 1.6, 1.8, 2.0, 2.2],
-             mu=[0.02, 0.063, 0.1, 0.2, 0.3], time=4.0, average=1.8, kick='2.0,1.0',
-             n=None, np=1, jobs=1,
-             overrides=[])
-    if o['study'] == 'friction':
-        o['u'] = [1.25]
-    args = argv[1:]
-    while args:
-        a = args.pop(0)
-        if a in ('--He', '--u', '--mu'):
-            o[a[2:]] = [float(v) for v in args.pop(0).split(',')]
-        elif a in ('--time', '--average'):
-            o[a[2:]] = float(args.pop(0))
-        elif a == '--kick':
-            o['kick'] = args.pop(0)
-        elif a == '-n':
-            o['n'] = args.pop(0)
-        elif a == '-np':
-            o['np'] = int(args.pop(0))
-        elif a in ('-j', '--jobs'):
-            o['jobs'] = int(args.pop(0))
-        elif '=' in a:
-            o['overrides'].append(a)
-        else:
-            sys.exit('circulation: unknown option %r (see --help)' % a)
+    p = cli.parser('circulation', __doc__)
+    p.add_argument('study', choices=('velocity', 'friction'),
+                   help='W_s against u_s for entrance heights (eq 15, Fig 6), or against '
+                        'the friction coefficient at u_ms (eq 16, Fig 7)')
+    p.add_argument('--He', type=cli.numbers, default=[95, 152], metavar='MM,...',
+                   help='entrance heights of the velocity study [mm] (default 95,152)')
+    p.add_argument('--u', type=cli.numbers, metavar='U,...',
+                   help='superficial velocities [m/s] (default 1.4,1.6,1.8,2.0,2.2; '
+                        'friction: 1.25)')
+    p.add_argument('--mu', type=cli.numbers, default=[0.02, 0.063, 0.1, 0.2, 0.3],
+                   metavar='MU,...', help='friction coefficients of the friction study '
+                                          '(default 0.02,0.063,0.1,0.2,0.3)')
+    run_options(p)
+    o = vars(cli.parse(p, argv))
+    if o['u'] is None:
+        o['u'] = [1.25] if o['study'] == 'friction' else [1.4, 1.6, 1.8, 2.0, 2.2]
     return o
 
 

@@ -14,9 +14,6 @@ evaluate gives the paper's figures:
            temperature of spout and downcomer vs time
 and heat.txt / heat.csv here (read by protocols/results).
 
-usage (in the case directory):
-  heatTransfer [--u 2.0] [--time 6] [--average 1.8] [--write 0.15] [-n N] [-np RANKS]
-               [key=value ...]
 --write is rounded to a whole number of time steps (3e-4 s).
 """
 import os
@@ -25,6 +22,7 @@ import subprocess
 import sys
 import time
 
+from spoutlab import cli
 from spoutlab import foamfile
 from spoutlab import spoutedbed
 from spoutlab import spoutheat
@@ -33,25 +31,21 @@ PAPER = {'Re_spout': 5690, 'Re_downcomer': 130}
 
 
 def options(argv):
-    o = dict(u=2.0, time=6.0, average=1.8, write=0.15, n=None, np=1, overrides=[])
-    args = list(argv)
-    while args:
-        a = args.pop(0)
-        if a in ('-h', '--help'):
-            print(__doc__)
-            sys.exit(0)
-        elif a in ('--u', '--time', '--average', '--write'):
-            o[a[2:]] = float(args.pop(0))
-        elif a == '-n':
-            o['n'] = int(args.pop(0))
-        elif a == '-np':
-            o['np'] = int(args.pop(0))
-        elif '=' in a:
-            o['overrides'].append(a)
-        else:
-            sys.exit('heatTransfer: unknown option %r (see --help)' % a)
+    p = cli.parser('heatTransfer', __doc__)
+    p.add_argument('--u', type=float, default=2.0, metavar='U',
+                   help='superficial velocity [m/s] (default %(default)s)')
+    p.add_argument('--time', type=float, default=6.0, metavar='T',
+                   help='simulated time [s] (default %(default)s)')
+    p.add_argument('--average', type=float, default=1.8, metavar='T',
+                   help='averaging window at the end [s] (default %(default)s)')
+    p.add_argument('--write', type=float, default=0.15, metavar='T',
+                   help='write interval [s] (default %(default)s)')
+    p.add_argument('-n', type=int, help='particles (default: system/spoutedBedDict)')
+    p.add_argument('-np', type=int, default=1, metavar='RANKS', help='MPI ranks')
+    cli.add_overrides(p)
+    o = vars(cli.parse(p, argv))
     if not 0 < o['average'] <= o['time']:
-        sys.exit('heatTransfer: --average must be positive and at most --time')
+        p.error('--average must be positive and at most --time')
     return o
 
 

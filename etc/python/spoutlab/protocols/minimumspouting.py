@@ -11,7 +11,7 @@ collapses and dP rises steeply; u_ms is the last step that still spouts
 step lasts --hold seconds; its pressure drop (axis probe 11 mm above the
 bottom) is averaged over the last --average seconds, and whether the bed
 spouts is the spout classifier's verdict over the particle files of that
-window (etc/python/spoutedbed.py bed_spouts).  The hysteresis is the
+window (spoutlab.spoutedbed.bed_spouts).  The hysteresis is the
 increasing branch's peak dP minus the decreasing branch's dP at the same
 u_s.
 
@@ -19,32 +19,6 @@ The schedule is decided as the run goes, as at the rig: a branch changes
 once --confirm successive steps agree (the break-through and one step
 above it; two collapsed steps), so a bed that spouts for one step by
 chance does not end the branch.
-
-usage: minimumSpouting [options] [key=value ...]       (run in a copy of the case)
-  --vessel V     plates (default) or no-plates (system/spoutedBedDict 'plates')
-  -n N           particles (default: system/spoutedBedDict)
-  -np RANKS      MPI ranks
-  --from U       first velocity of the increasing branch, on the settled
-                 bed [m/s] (default 1.0)
-  --top U        highest velocity tried (default 3.0): a bed still not
-                 spouting there does not spout
-  --stop U       lowest velocity of the decreasing branch (default 0.9)
-  --step DU      velocity step (default 0.1)
-  --up           after the collapse, raise u_s again
-  --full-loop    rise to --top, then fall to --stop, whatever the
-                 classifier says (the paper's whole loop, the same steps for
-                 any verdicts); u_ms is also read from dP alone, the step
-                 before its steepest rise on the decreasing branch
-  --confirm N    successive steps that confirm a break-through, a collapse
-                 or a re-formed spout (default 2)
-  --hold T       time per step [s] (default 2.5)
-  --average T    averaging window at the end of each step [s] (default 1.8)
-  --report       write the report from the steps finished so far and stop
-                 (nothing is run; e.g. while the protocol is still running)
-  --kick U       instead of the increasing branch: spin the bed up at U for
-                 --spinup seconds (default 1.5), then lower u_s from --start
-                 (default 2.0)
-  key=value      overrides of system/spoutedBedDict
 
 Restart: run the same command again after an interruption; spoutFoam
 continues from the last written time (LIGGGHTS restarts are in DEM/) and
@@ -55,6 +29,7 @@ Results: ums.csv, ums.png, ums.txt, snapshot_<branch>_u<u>.png.
 import subprocess
 import sys
 
+from spoutlab import cli
 from spoutlab import mixing
 from spoutlab import casefiles as sc
 from spoutlab import spoutedbed
@@ -64,36 +39,49 @@ PAPER = {('plates', 26000): (1.25, 1.40), ('no-plates', 10000): (2.0, 1.75)}
 
 
 def options(argv):
-    o = dict(vessel='plates', rise_from=1.0, top=3.0, start=2.0, stop=0.9, step=0.1,
-             kick=None, up=False, full_loop=False, report=False, confirm=2, spinup=1.5,
-             hold=2.5, average=1.8, n=None, np=1, overrides=[])
-    args = list(argv)
-    while args:
-        a = args.pop(0)
-        if a in ('-h', '--help'):
-            print(__doc__)
-            sys.exit(0)
-        elif a == '--up':
-            o['up'] = True
-        elif a in ('--full-loop', '--report'):
-            o[a[2:].replace('-', '_')] = True
-        elif a == '--vessel' and args and args[0] in ('plates', 'no-plates'):
-            o['vessel'] = args.pop(0)
-        elif a == '--from' and args:
-            o['rise_from'] = float(args.pop(0))
-        elif a in ('--top', '--start', '--stop', '--step', '--kick', '--spinup', '--hold',
-                   '--average') and args:
-            o[a[2:]] = float(args.pop(0))
-        elif a == '-n' and args:
-            o['n'] = int(args.pop(0))
-        elif a in ('-np', '--confirm') and args:
-            o[a.lstrip('-')] = int(args.pop(0))
-        elif '=' in a and not a.startswith('-'):
-            o['overrides'].append(a)
-        else:
-            sys.exit('minimumSpouting: unknown option or missing value %r (see --help)' % a)
+    p = cli.parser('minimumSpouting', __doc__)
+    p.add_argument('--vessel', choices=('plates', 'no-plates'), default='plates',
+                   help="with draft plates (default) or without (system/spoutedBedDict "
+                        "'plates')")
+    p.add_argument('-n', type=int, help='particles (default: system/spoutedBedDict)')
+    p.add_argument('-np', type=int, default=1, metavar='RANKS', help='MPI ranks')
+    p.add_argument('--from', dest='rise_from', type=float, default=1.0, metavar='U',
+                   help='first velocity of the increasing branch, on the settled bed '
+                        '[m/s] (default %(default)s)')
+    p.add_argument('--top', type=float, default=3.0, metavar='U',
+                   help='highest velocity tried (default %(default)s): a bed still not '
+                        'spouting there does not spout')
+    p.add_argument('--stop', type=float, default=0.9, metavar='U',
+                   help='lowest velocity of the decreasing branch (default %(default)s)')
+    p.add_argument('--step', type=float, default=0.1, metavar='DU',
+                   help='velocity step (default %(default)s)')
+    p.add_argument('--up', action='store_true', help='after the collapse, raise u_s again')
+    p.add_argument('--full-loop', action='store_true',
+                   help='rise to --top, then fall to --stop, whatever the classifier says '
+                        '(the paper\'s whole loop, the same steps for any verdicts); u_ms '
+                        'is also read from dP alone, the step before its steepest rise on '
+                        'the decreasing branch')
+    p.add_argument('--confirm', type=int, default=2, metavar='N',
+                   help='successive steps that confirm a break-through, a collapse or a '
+                        're-formed spout (default %(default)s)')
+    p.add_argument('--hold', type=float, default=2.5, metavar='T',
+                   help='time per step [s] (default %(default)s)')
+    p.add_argument('--average', type=float, default=1.8, metavar='T',
+                   help='averaging window at the end of each step [s] (default %(default)s)')
+    p.add_argument('--report', action='store_true',
+                   help='write the report from the steps finished so far and stop (nothing '
+                        'is run; e.g. while the protocol is still running)')
+    p.add_argument('--kick', type=float, metavar='U',
+                   help='instead of the increasing branch: spin the bed up at U for '
+                        '--spinup seconds, then lower u_s from --start')
+    p.add_argument('--spinup', type=float, default=1.5, metavar='T',
+                   help='spin-up time with --kick [s] (default %(default)s)')
+    p.add_argument('--start', type=float, default=2.0, metavar='U',
+                   help='first velocity after the spin-up (default %(default)s)')
+    cli.add_overrides(p)
+    o = vars(cli.parse(p, argv))
     if o['average'] > o['hold']:
-        sys.exit('minimumSpouting: --average must not exceed --hold')
+        p.error('--average must not exceed --hold')
     o['overrides'].append('plates=%s' % ('yes' if o['vessel'] == 'plates' else 'no'))
     if o['n']:
         o['overrides'].append('nParticles=%d' % o['n'])

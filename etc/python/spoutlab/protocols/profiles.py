@@ -8,9 +8,6 @@ Each velocity is one run in runs/He<He>_u<u>/ made exactly as a point of
 share runs when started in the same directory; finished runs are kept, and
 running the command again after an interruption continues.
 
-usage (in the case directory):
-  profiles [--u 1.4,2.0] [--He 95] [--time T] [--average T] [--kick U,T] [-n N] [-np RANKS]
-           [key=value ...]
 Results: profiles.txt (the paper's features, lower vs upper region) and, per
 velocity, profiles_u<u>_{spoutVelocity,spoutVoidage,downcomerVelocity}.png
 and the CSV files of the run.
@@ -19,19 +16,24 @@ import os
 import shutil
 import sys
 
+from spoutlab import cli
 from spoutlab import spoutedbed
 from spoutlab.protocols import circulation as circ
 
 
+def parse(argv):
+    p = cli.parser('profiles', __doc__)
+    p.add_argument('--u', type=cli.numbers, default=[1.4, 2.0], metavar='U,...',
+                   help='superficial velocities [m/s] (default 1.4,2.0)')
+    p.add_argument('--He', type=cli.numbers, default=[95], metavar='MM',
+                   help='entrance height [mm] (default 95; of a list, the first)')
+    circ.run_options(p)
+    return vars(cli.parse(p, argv))
+
 
 def main(argv):
-    if argv and argv[0] in ('-h', '--help'):
-        print(__doc__)
-        return 0
-    o = circ.parse(['velocity'] + argv)
-    if '--u' not in argv:
-        o['u'] = [1.4, 2.0]
-    He = o['He'][0] if '--He' in argv else 95
+    o = parse(argv)
+    He = o['He'][0]
     lines = ['time-averaged profiles (draft-plate paper, Figs 4 and 5); lower region '
              'z/R_d < 12, upper region above; %g s per run, averaged over the last %g s'
              % (o['time'], o['average'])]

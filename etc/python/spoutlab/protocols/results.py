@@ -2,15 +2,6 @@
 SpoutLab's values beside the draft-plate paper's, with the settings and wall
 time of the run that produced each.
 
-usage: results [UMS_DIR [CIRCULATION_DIR]] [--heat HEAT_DIR] [--noplates UMS_DIR ...]
-               [--maps MAPS_DIR] [--mixing MIXING_DIR] [-o docs/RESULTS.md]
-  UMS_DIR          a case copy where protocols/minimumSpouting ran (ums.txt, ums.csv)
-  CIRCULATION_DIR  a case copy where protocols/circulation and profiles ran
-  HEAT_DIR         a case copy where protocols/heatTransfer ran (heat.csv)
-  --noplates       a case copy where minimumSpouting --vessel no-plates ran, with
-                   10 000 or 26 000 particles (repeat for both)
-  --maps           a case copy where protocols/velocityMaps ran (maps.txt)
-  --mixing         a case copy where protocols/mixing ran (mixing.txt)
 The figures (Figs 2-7, 11, 12 of the draft-plate paper, Figs 2-4 of the
 no-draft one) are copied to docs/figures/.
 
@@ -27,6 +18,7 @@ import re
 import shutil
 import sys
 
+from spoutlab import cli
 from spoutlab import spoutedbed
 
 
@@ -604,29 +596,39 @@ def write_csv(path, new):
     return len(rows)
 
 
+def parse(argv):
+    p = cli.parser('results', __doc__)
+    p.add_argument('cases', nargs='*', metavar='CASE_DIR',
+                   help='UMS_DIR, a case copy where protocols/minimumSpouting ran (ums.txt, '
+                        'ums.csv), then CIRCULATION_DIR, one where protocols/circulation '
+                        'and profiles ran')
+    p.add_argument('--heat', metavar='HEAT_DIR',
+                   help='a case copy where protocols/heatTransfer ran (heat.csv)')
+    p.add_argument('--noplates', action='append', default=[], metavar='UMS_DIR',
+                   help='a case copy where minimumSpouting --vessel no-plates ran, with '
+                        '10 000 or 26 000 particles (repeat for both)')
+    p.add_argument('--maps', metavar='MAPS_DIR',
+                   help='a case copy where protocols/velocityMaps ran (maps.txt)')
+    p.add_argument('--mixing', metavar='MIXING_DIR',
+                   help='a case copy where protocols/mixing ran (mixing.txt)')
+    p.add_argument('-o', dest='out', metavar='RESULTS.md',
+                   default=os.path.join(os.environ.get('SPOUTLAB_DIR', '../..'), 'docs',
+                                        'RESULTS.md'),
+                   help='the table to write (default: docs/RESULTS.md of the repository); '
+                        'results.csv and figures/ go beside it')
+    a = cli.parse(p, argv)
+    if len(a.cases) > 2:
+        p.error('expected at most UMS_DIR and CIRCULATION_DIR, got %d directories'
+                % len(a.cases))
+    return p, a
+
+
 def main(argv):
-    out = os.path.join(os.environ.get('SPOUTLAB_DIR', '../..'), 'docs', 'RESULTS.md')
-    cases, heat, noplates, maps, mixing = [], None, [], None, None
-    args = list(argv)
-    while args:
-        a = args.pop(0)
-        if a == '-o':
-            out = args.pop(0)
-        elif a == '--heat':
-            heat = args.pop(0)
-        elif a == '--noplates':
-            noplates.append(args.pop(0))
-        elif a == '--maps':
-            maps = args.pop(0)
-        elif a == '--mixing':
-            mixing = args.pop(0)
-        elif a in ('-h', '--help'):
-            print(__doc__)
-            return 0
-        else:
-            cases.append(a)
+    p, a = parse(argv)
+    out, cases, heat, noplates, maps, mixing = (a.out, a.cases, a.heat, a.noplates, a.maps,
+                                                a.mixing)
     if not cases and not heat and not noplates and not maps and not mixing:
-        print(__doc__)
+        p.print_help()
         return 2
     ums = cases[0] if cases else None
     circ = cases[1] if len(cases) > 1 else None

@@ -9,19 +9,18 @@ bed broken through at --kick, then u_s to --time; averages over the last
 --average seconds); finished runs are kept, so running the command again
 after an interruption continues.
 
-usage (in the case directory):
-  velocityMaps [--points 10000:2.0,26000:2.2] [--time T] [--average T]
-               [--kick U,T] [-np RANKS] [-j JOBS] [key=value ...]
 Results: maps.txt, maps_<label>_{gasVelocity,particleVelocity}.png (maps),
 maps_<label>_profiles.png and maps_<label>_profiles.csv (profiles across the
 width every 5 gas cells, 95 mm, of height up to the settled bed).
 """
+import argparse
 import concurrent.futures
 import math
 import os
 import sys
 
 from spoutlab import casefiles as sc
+from spoutlab import cli
 
 from spoutlab import foamfile
 from spoutlab import spoutedbed
@@ -34,34 +33,22 @@ SYMMETRIC = 0.2     # mean |U_z(x) - U_z(-x)| below this fraction of mean |U_z|
 
 
 
+def points(text):
+    """'10000:2.0,26000:2.2' -> [(10000, 2.0), (26000, 2.2)]."""
+    try:
+        return [(int(p.split(':')[0]), float(p.split(':')[1])) for p in text.split(',')]
+    except (IndexError, ValueError):
+        raise argparse.ArgumentTypeError('expected N:U,N:U (particles:velocity), got %r' % text)
+
+
 def parse(argv):
-    o = dict(points=[(10000, 2.0), (26000, 2.2)], time=4.0, average=1.8, kick='2.5,1.0',
-             np=1, jobs=1, overrides=[], n=None)
-    args = list(argv)
-    while args:
-        a = args.pop(0)
-        try:
-            if a in ('-h', '--help'):
-                print(__doc__)
-                sys.exit(0)
-            elif a == '--points':
-                o['points'] = [(int(p.split(':')[0]), float(p.split(':')[1]))
-                               for p in args.pop(0).split(',')]
-            elif a in ('--time', '--average'):
-                o[a[2:]] = float(args.pop(0))
-            elif a == '--kick':
-                o['kick'] = args.pop(0)
-            elif a == '-np':
-                o['np'] = int(args.pop(0))
-            elif a in ('-j', '--jobs'):
-                o['jobs'] = int(args.pop(0))
-            elif '=' in a and not a.startswith('-'):
-                o['overrides'].append(a)
-            else:
-                sys.exit('velocityMaps: unknown option %r (see --help)' % a)
-        except (IndexError, ValueError):
-            sys.exit('velocityMaps: option %s expected a value (--points N:U,N:U; numbers '
-                     'elsewhere)' % a)
+    p = cli.parser('velocityMaps', __doc__)
+    p.add_argument('--points', type=points, default=[(10000, 2.0), (26000, 2.2)],
+                   metavar='N:U,...', help='runs as particles:superficial velocity '
+                                           '(default 10000:2.0,26000:2.2)')
+    circ.run_options(p, kick='2.5,1.0', particles=False)
+    o = vars(cli.parse(p, argv))
+    o['n'] = None
     return o
 
 

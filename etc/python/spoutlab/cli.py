@@ -1,0 +1,61 @@
+"""The command lines of the case scripts and protocols: argparse parsers
+with the module's docstring as their help, and the argument types they
+share.  Bad input ends with argparse's usage line and one error line that
+names the option."""
+import argparse
+
+
+def parser(prog, doc, epilog=None):
+    """A parser whose --help shows doc (a module docstring) as written."""
+    return argparse.ArgumentParser(prog=prog, description=doc, epilog=epilog, allow_abbrev=False,
+                                   formatter_class=argparse.RawDescriptionHelpFormatter)
+
+
+def override(text):
+    """A key=value override of a case dictionary."""
+    key, sep, _ = text.partition('=')
+    if not sep or not key or text.startswith('-'):
+        raise argparse.ArgumentTypeError('expected key=value, got %r' % text)
+    return text
+
+
+def numbers(text):
+    """A comma-separated list of numbers: '1.4,1.6' -> [1.4, 1.6]."""
+    try:
+        return [float(v) for v in text.split(',')]
+    except ValueError:
+        raise argparse.ArgumentTypeError('expected numbers separated by commas, got %r' % text)
+
+
+def pair(text):
+    """'U,T': two numbers separated by a comma, kept as written (the case's
+    Allrun takes them so)."""
+    values = numbers(text)
+    if len(values) != 2:
+        raise argparse.ArgumentTypeError('expected two numbers U,T, got %r' % text)
+    return text
+
+
+def add_overrides(p, what='system/spoutedBedDict'):
+    p.add_argument('overrides', nargs='*', default=[], type=override, metavar='key=value',
+                   help='overrides of %s, e.g. He=152 mu=0.063' % what)
+
+
+def parse(p, argv):
+    """Options and key=value overrides in any order: argparse takes the
+    first run of overrides, the later ones come back unparsed and are
+    appended in order (a later override of a key wins)."""
+    a, rest = p.parse_known_args(argv)
+    unknown = [x for x in rest if not _is_override(x)]
+    if unknown:
+        p.error('unrecognized arguments: %s' % ' '.join(unknown))
+    if rest:
+        a.overrides = list(a.overrides) + rest
+    return a
+
+
+def _is_override(text):
+    try:
+        return bool(override(text))
+    except argparse.ArgumentTypeError:
+        return False
