@@ -10,10 +10,9 @@ faces), placed so the ranks get equal numbers of cells.  spoutFoam reads the
 slabs back from the decomposed mesh and sets LIGGGHTS' cuts to the same
 planes.
 
-    decomposition.py CASE N     writes CASE/constant/cellDecomposition and
-                                CASE/system/decomposeParDict (N slabs);
-                                needs CASE/0/C (postProcess -func
-                                writeCellCentres)
+    python3 -m spoutlab.decomposition CASE N
+        writes CASE/constant/cellDecomposition and CASE/system/decomposeParDict
+        (N slabs); needs CASE/0/C (postProcess -func writeCellCentres)
 """
 import argparse
 import os
@@ -74,16 +73,16 @@ def write(case, n):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split('\n\n')[0])
+    parser = argparse.ArgumentParser(prog='decomposition', description=__doc__.split('\n\n')[0])
     parser.add_argument('case')
     parser.add_argument('ranks', type=int)
     args = parser.parse_args()
     if args.ranks < 2:
-        sys.exit('decomposition.py: expected 2 or more ranks, got %d' % args.ranks)
+        parser.error('ranks: expected 2 or more, got %d' % args.ranks)
     try:
         cuts = write(args.case, args.ranks)
     except (OSError, ValueError) as e:
-        sys.exit('decomposition.py: %s' % e)
+        sys.exit('decomposition: %s' % e)
     print('decomposition: %d x-slabs, cuts at %s m'
           % (args.ranks, ', '.join('%.4g' % c for c in cuts)))
 

@@ -48,9 +48,9 @@ well-mixed bed therefore needs cells of more than about 100 particles;
 with the gas cells (11 x 19 mm, about 18 particles) the papers' form could
 not pass 0.77.
 
-usage: mixing.py CASE [--split {left-right,lower-upper,both}]
-                      [--cell DX DZ] [--min-count N] [--weighting {particles,cells}]
-                      [--scan-cells] [--no-vtp] [--no-plot]
+usage: python3 -m spoutlab.mixing CASE [--split {left-right,lower-upper,both}]
+           [--cell DX DZ] [--min-count N] [--weighting {particles,cells}]
+           [--scan-cells] [--no-vtp] [--no-plot]
 writes CASE/postProcessing/mixing.csv and mixing.png; with --scan-cells
 mixingCellSize.csv; and postProcessing/mixingParticles/ (see write_labelled).
 """
@@ -309,7 +309,7 @@ def plot_history(csv, splits, png):
 
 
 def main(argv=None):
-    p = argparse.ArgumentParser(
+    p = argparse.ArgumentParser(prog='mixing',
         description='Degree of particle mixing of a spouted-bed case (eqs 17-19 and '
                     'Lacey) from its particle files; writes postProcessing/mixing.csv, '
                     'mixing.png and the labelled particles for ParaView '

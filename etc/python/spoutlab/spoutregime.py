@@ -280,7 +280,11 @@ def region_from_text(text, g, what):
 
 if __name__ == '__main__':
     # stand-alone use: python3 -m spoutlab.spoutregime [CASE]
-    import sys
+    import argparse
     from spoutlab import spoutedbed
-    case = sys.argv[1] if len(sys.argv) > 1 else '.'
+    p = argparse.ArgumentParser(prog='spoutregime', description='Whether the bed of a '
+                                'spouted-bed case spouts: the classifier over all its '
+                                'particle files.')
+    p.add_argument('case', nargs='?', default='.', help='the case (default: here)')
+    case = p.parse_args().case
     print(classify_case(spoutedbed.load(case), case).describe())

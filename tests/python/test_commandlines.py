@@ -1,0 +1,128 @@
+"""The command lines of the spouted bed's scripts and protocols: each
+command answers --help, stops on a bad option with one error line naming
+it (status 2), and reads its options with the defaults its documentation
+gave before the front ends were argparse (the values below are those of
+the usage texts, not read from the code)."""
+import os
+import shutil
+import signal
+import subprocess
+import sys
+import tempfile
+import unittest
+
+sys.path.insert(0, os.path.join(os.environ.get('SPOUTLAB_DIR', '../..'), 'etc', 'python'))
+from spoutlab.protocols import circulation, heattransfer, minimumspouting  # noqa: E402
+from spoutlab.protocols import profiles, results, velocitymaps  # noqa: E402
+
+REPOSITORY = os.path.abspath(os.environ.get('SPOUTLAB_DIR', '../..'))
+COMMANDS = ['generate', 'inletVelocity', 'evaluate'] + [
+    os.path.join('protocols', p) for p in ('minimumSpouting', 'circulation', 'profiles',
+                                          'velocityMaps', 'heatTransfer', 'results')]
+CASE = None
+
+
+def setUpModule():
+    """The commands run in a copy of the case: a front end that let a bad
+    option through would start its protocol there, not in the repository."""
+    global CASE
+    CASE = os.path.join(tempfile.mkdtemp(), 'spoutDraftPlates')
+    shutil.copytree(os.path.join(REPOSITORY, 'openfoam_cases', 'spoutDraftPlates'), CASE)
+
+
+def tearDownModule():
+    shutil.rmtree(os.path.dirname(CASE))
+
+
+def run(command, *args):
+    """Run a command of the case copy; one that is still running after a
+    minute (a protocol started) is stopped with all it started."""
+    proc = subprocess.Popen([os.path.join(CASE, command)] + list(args), cwd=CASE,
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                            env=dict(os.environ, SPOUTLAB_DIR=REPOSITORY),
+                            start_new_session=True)
+    try:
+        out, err = proc.communicate(timeout=60)
+    except subprocess.TimeoutExpired:
+        os.killpg(proc.pid, signal.SIGKILL)
+        proc.communicate()
+        raise AssertionError('%s %s ran on instead of stopping at its options'
+                             % (command, ' '.join(args)))
+    return subprocess.CompletedProcess(proc.args, proc.returncode, out, err)
+
+
+class Commands(unittest.TestCase):
+    def test_help_and_a_bad_option(self):
+        for command in COMMANDS:
+            name = os.path.basename(command)
+            with self.subTest(command=name):
+                shown = run(command, '--help')
+                self.assertEqual(shown.returncode, 0, shown.stderr)
+                self.assertTrue(shown.stdout.startswith('usage: %s ' % name), shown.stdout)
+                # the required arguments given, so that the option is what is wrong
+                needs = {'inletVelocity': ['2'], 'circulation': ['velocity']}.get(name, [])
+                bad = run(command, *(needs + ['--bogus']))
+                self.assertEqual(bad.returncode, 2)
+                self.assertEqual(bad.stderr.splitlines()[-1],
+                                 '%s: error: unrecognized arguments: --bogus' % name)
+
+    def test_a_bad_value_names_its_option(self):
+        for command, args, option in (
+                ('protocols/minimumSpouting', ['--hold', 'long'], 'argument --hold'),
+                ('protocols/circulation', ['velocity', '--u', '1.4;1.6'], 'argument --u'),
+                ('protocols/circulation', ['velocity', '--kick', '2'], 'argument --kick'),
+                ('protocols/velocityMaps', ['--points', '3000'], 'argument --points'),
+                ('inletVelocity', ['fast'], 'argument NUMBER'),
+                ('generate', ['He'], 'argument key=value')):
+            with self.subTest(command=command, args=args):
+                bad = run(command, *args)
+                self.assertEqual(bad.returncode, 2)
+                last = bad.stderr.splitlines()[-1]
+                self.assertTrue(last.startswith('%s: error: %s: '
+                                                % (os.path.basename(command), option)), last)
+
+
+class Defaults(unittest.TestCase):
+    """The documented defaults, and overrides wherever they stand."""
+
+    def test_minimum_spouting(self):
+        o = minimumspouting.options(['He=152', '--up', '-np', '2', 'mu=0.1', '-n', '1500'])
+        expected = dict(vessel='plates', rise_from=1.0, top=3.0, stop=0.9, step=0.1,
+                        kick=None, up=True, confirm=2, spinup=1.5, hold=2.5, average=1.8,
+                        start=2.0, n=1500, np=2)
+        self.assertEqual({k: o[k] for k in expected}, expected)
+        self.assertEqual(o['overrides'], ['He=152', 'mu=0.1', 'plates=yes', 'nParticles=1500'])
+        with self.assertRaises(SystemExit):
+            minimumspouting.options(['--hold', '1', '--average', '1.5'])
+
+    def test_circulation(self):
+        o = circulation.parse(['velocity'])
+        expected = dict(study='velocity', He=[95, 152], u=[1.4, 1.6, 1.8, 2.0, 2.2],
+                        time=4.0, average=1.8, kick='2.0,1.0', n=None, np=1, jobs=1,
+                        overrides=[])
+        self.assertEqual({k: o[k] for k in expected}, expected)
+        o = circulation.parse(['friction', 'He=152', '-j', '2', 'e=0.8', '-n', '1500'])
+        self.assertEqual((o['u'], o['mu'], o['jobs'], o['n'], o['overrides']),
+                         ([1.25], [0.02, 0.063, 0.1, 0.2, 0.3], 2, '1500',
+                          ['He=152', 'e=0.8']))
+
+    def test_profiles_and_velocity_maps(self):
+        o = profiles.parse([])
+        self.assertEqual((o['u'], o['He'][0], o['time'], o['average'], o['kick']),
+                         ([1.4, 2.0], 95, 4.0, 1.8, '2.0,1.0'))
+        o = velocitymaps.parse(['-j', '2'])
+        self.assertEqual((o['points'], o['time'], o['average'], o['kick'], o['np'],
+                          o['jobs']), ([(10000, 2.0), (26000, 2.2)], 4.0, 1.8, '2.5,1.0', 1, 2))
+
+    def test_heat_transfer_and_results(self):
+        o = heattransfer.options([])
+        self.assertEqual((o['u'], o['time'], o['average'], o['write'], o['n'], o['np']),
+                         (2.0, 6.0, 1.8, 0.15, None, 1))
+        _, a = results.parse(['ums', 'circ', '--heat', 'h', '--noplates', 'a',
+                              '--noplates', 'b', '-o', 'out.md'])
+        self.assertEqual((a.cases, a.heat, a.noplates, a.maps, a.out),
+                         (['ums', 'circ'], 'h', ['a', 'b'], None, 'out.md'))
+
+
+if __name__ == '__main__':
+    unittest.main()
