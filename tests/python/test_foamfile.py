@@ -197,8 +197,10 @@ class AgainstFoamDictionary(unittest.TestCase):
         for name, key in AGAINST_FOAM:
             path = os.path.join(copy, name)
             with self.subTest(file=name, key=key):
+                # OpenFOAM warns on stdout when PWD is not the working directory
                 theirs = subprocess.run(['foamDictionary', '-entry', key, '-value', path],
-                                        capture_output=True, text=True, env=env)
+                                        capture_output=True, text=True, cwd=copy,
+                                        env=dict(env, PWD=copy))
                 self.assertEqual(theirs.returncode, 0, theirs.stderr)
                 ours = foamfile.entry(path, key)
                 self.assertEqual(foamfile.parse_value(ours),

@@ -1,5 +1,5 @@
-"""The evaluate scripts' own heat-transfer references (etc/python/
-heatcorrelations.py) and the reading of coupling.csv: hand values of the
+"""The evaluate scripts' own heat-transfer references
+(spoutlab.heatcorrelations) and the reading of coupling.csv: hand values of the
 correlations, the energy bookkeeping on a history built to balance, and a
 restarted run's log."""
 import os

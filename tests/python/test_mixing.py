@@ -1,4 +1,4 @@
-"""The degree of mixing (etc/python/mixing.py) against answers known
+"""The degree of mixing (spoutlab.mixing) against answers known
 without the code: a completely segregated bed, a hand-computed three-cell
 field, and the expectation of both forms for a randomly labelled bed.
 

@@ -1,4 +1,4 @@
-"""The spout classifier (etc/python/spoutregime.py) on particle fields built
+"""The spout classifier (spoutlab.spoutregime) on particle fields built
 here whose regime is known by construction: a spouting bed (a dilute,
 rising column through the bed and a fountain over it, the annulus sliding
 down), a packed bed at rest, and a bubbling bed whose voids rise through

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""spoutlab_case's VTK XML reader on files VTK wrote (tests/vtk/
+"""spoutlab.casefiles' VTK XML reader on files VTK wrote (tests/vtk/
 writeParticleSample): the values against the sample's formulas, written out
 again here from tests/vtk/ParticleSample.hpp, in spoutFoam's layout (zlib,
 64-bit headers) and in VTK's plain one (no compression, 32-bit headers); and

@@ -74,7 +74,7 @@ def read_coupling_log(case):
 # An array is [byte count][bytes] uncompressed, or with a compressor
 # [blocks][block size][last block size][compressed size of each block] and
 # the zlib streams.  The header integers are `header_type` (UInt32 unless
-# said).  Inline ASCII arrays (mixing.py adds those) are read as well.
+# said).  Inline ASCII arrays (spoutlab.mixing adds those) are read as well.
 # Standard library only: several case scripts run without numpy.
 
 VTK_TYPES = {'Int8': 'b', 'UInt8': 'B', 'Int16': 'h', 'UInt16': 'H', 'Int32': 'i',

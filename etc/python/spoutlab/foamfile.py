@@ -131,7 +131,9 @@ def _parse(tokens, k, dictionary, path):
                 raise FoamFileError('%s: %s: expected a file name' % (path, key))
             target = _include(dictionary, tokens[k + 1], path)
             if os.path.isfile(target):
-                _parse(_tokens(open(target).read(), target), 0, dictionary, target)
+                with open(target) as f:
+                    text = f.read()
+                _parse(_tokens(text, target), 0, dictionary, target)
             elif key == '#include':
                 raise FoamFileError('%s: #include %s: no such file' % (path, tokens[k + 1]))
             k += 2

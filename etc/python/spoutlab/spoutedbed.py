@@ -377,7 +377,7 @@ WINDOW_SLACK = 1e-3
 
 def bed_spouts(g, case, t0, t1):
     """Whether the bed spouts between t0 and t1 [s]: the spout classifier
-    (etc/python/spoutregime.py: open dilute core through the bed, upward
+    (spoutlab.spoutregime: open dilute core through the bed, upward
     flux in it, a fountain, persistent over the particle files written in
     the window), with its default spout region for the vessel.  The one
     place the protocols ask; returns the classifier's Verdict (.spouts,
