@@ -14,7 +14,8 @@ V beta/(1 - eps) w (single_particle_drag).  Re = eps rho w d/mu for all.
 Standard library only.
 """
 import math
-import re
+
+from spoutlab import foamfile
 
 
 def reynolds(eps, d, w, rho, mu):
@@ -114,30 +115,18 @@ def single_particle_drag(law, eps, d, w, rho, mu):
     return math.pi / 6 * d**3 * law.beta(eps, d, w, rho, mu) / (1 - eps) * w
 
 
-def _strip_comments(text):
-    return re.sub(r'//.*', '', re.sub(r'/\*.*?\*/', '', text, flags=re.S))
-
-
-def _subdict(text, name):
-    m = re.search(r'(?:^|\s)%s\s*\{([^{}]*)\}' % re.escape(name), text)
-    return m.group(1) if m else ''
-
-
-def _entry(text, key):
-    m = re.search(r'(?:^|[\s{;])%s\s+([^;{}]+);' % re.escape(key), text)
-    return m.group(1).strip() if m else None
-
-
 def from_coupling_properties(path='constant/couplingProperties'):
     """The law a case selects: dragModel and its <name>Props, as the solver
     reads them (defaults of docs/DESIGN.md §3.3).  An unknown name stops
     with one line naming the file and the key."""
-    text = _strip_comments(open(path).read())
-    name = _entry(text, 'dragModel')
-    props = _subdict(text, name + 'Props') if name else ''
+    selection = foamfile.read(path)
+    name = selection.get('dragModel')
+    props = selection.get(name + 'Props') if isinstance(name, str) else None
+    if not isinstance(props, dict):
+        props = {}
     if name == 'Gidaspow':
-        switch = _entry(props, 'switch') or 'sharp'
-        eps_s = float(_entry(props, 'epsilonSwitch') or 0.8)
+        switch = props.get('switch') or 'sharp'
+        eps_s = float(props.get('epsilonSwitch') or 0.8)
         if switch not in ('sharp', 'smooth'):
             raise SystemExit("%s: key 'GidaspowProps/switch' expected sharp or smooth, got '%s'"
                              % (path, switch))
