@@ -14,6 +14,7 @@ generate, inletVelocity), the spouted bed's protocols and the tests share.
   heatcorrelations, packedbedheat, draglaws, bedlayers
                     the analytic references of the verification cases
   decomposition     x-slabs for parallel coupled runs
+  cli               the argparse front ends of the scripts and protocols
   protocols         the papers' protocols; openfoam_cases/spoutDraftPlates/
                     protocols/<name> are their commands
 
