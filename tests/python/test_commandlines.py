@@ -13,12 +13,13 @@ import unittest
 
 sys.path.insert(0, os.path.join(os.environ.get('SPOUTLAB_DIR', '../..'), 'etc', 'python'))
 from spoutlab.protocols import circulation, heattransfer, minimumspouting  # noqa: E402
-from spoutlab.protocols import profiles, results, velocitymaps  # noqa: E402
+from spoutlab.protocols import mixing, profiles, results, velocitymaps  # noqa: E402
 
 REPOSITORY = os.path.abspath(os.environ.get('SPOUTLAB_DIR', '../..'))
 COMMANDS = ['generate', 'inletVelocity', 'evaluate'] + [
     os.path.join('protocols', p) for p in ('minimumSpouting', 'circulation', 'profiles',
-                                          'velocityMaps', 'heatTransfer', 'results')]
+                                          'velocityMaps', 'heatTransfer', 'results',
+                                          'mixing')]
 CASE = None
 
 
@@ -88,8 +89,8 @@ class Defaults(unittest.TestCase):
     def test_minimum_spouting(self):
         o = minimumspouting.options(['He=152', '--up', '-np', '2', 'mu=0.1', '-n', '1500'])
         expected = dict(vessel='plates', rise_from=1.0, top=3.0, stop=0.9, step=0.1,
-                        kick=None, up=True, confirm=2, spinup=1.5, hold=2.5, average=1.8,
-                        start=2.0, n=1500, np=2)
+                        kick=None, up=True, full_loop=False, report=False, confirm=2,
+                        spinup=1.5, hold=2.5, average=1.8, start=2.0, n=1500, np=2)
         self.assertEqual({k: o[k] for k in expected}, expected)
         self.assertEqual(o['overrides'], ['He=152', 'mu=0.1', 'plates=yes', 'nParticles=1500'])
         with self.assertRaises(SystemExit):
@@ -119,9 +120,16 @@ class Defaults(unittest.TestCase):
         self.assertEqual((o['u'], o['time'], o['average'], o['write'], o['n'], o['np']),
                          (2.0, 6.0, 1.8, 0.15, None, 1))
         _, a = results.parse(['ums', 'circ', '--heat', 'h', '--noplates', 'a',
-                              '--noplates', 'b', '-o', 'out.md'])
-        self.assertEqual((a.cases, a.heat, a.noplates, a.maps, a.out),
-                         (['ums', 'circ'], 'h', ['a', 'b'], None, 'out.md'))
+                              '--noplates', 'b', '-o', 'out.md', '--mixing', 'm'])
+        self.assertEqual((a.cases, a.heat, a.noplates, a.maps, a.mixing, a.out),
+                         (['ums', 'circ'], 'h', ['a', 'b'], None, 'm', 'out.md'))
+
+    def test_mixing(self):
+        a = mixing.parse(['-j', '2', 'e=0.8'])
+        self.assertEqual((a.time, a.write, a.final, a.np, a.jobs, a.overrides),
+                         (4.0, 0.1, 1.0, 1, 2, ['e=0.8']))
+        self.assertEqual(a.points[:4], [('no-plates', 10000, 2.0), ('no-plates', 26000, 2.5),
+                                        ('no-plates', 26000, 3.0), ('plates', 26000, 2.0)])
 
 
 if __name__ == '__main__':

@@ -26,6 +26,7 @@ the finished steps decide the same schedule again.  Progress is printed
 every few seconds and a line per finished step.
 Results: ums.csv, ums.png, ums.txt, snapshot_<branch>_u<u>.png.
 """
+import os
 import subprocess
 import sys
 

@@ -1,4 +1,3 @@
-#!/usr/bin/env python3
 """The degree of mixing against time: the draft-plate paper's Fig 10 (no
 plates, 26 000 particles at 2.2-3.0 m/s and 10 000 at velocities from
 u_ms), the no-draft paper's Figs 5-6 (both bed heights, Fig 6 at 2.0 m/s),
@@ -6,7 +5,7 @@ and the draft-plate bed at 2.0 m/s, which neither paper gives.
 
 Each point is one run in runs/mix_<vessel>_n<N>_u<u>/ made like a point of
 `circulation` (protocols/circulation run_point): a copy of the case, the
-settled bed labelled A/B at t = 0 (etc/python/mixing.py: left-right halves
+settled bed labelled A/B at t = 0 (spoutlab.mixing: left-right halves
 by default, lower-upper beside), gas at u_s from t = 0 as in the papers (no
 spin-up: M oscillates while the spout forms), particle files every --write
 seconds.  Runs of one vessel and particle count share one settled bed;
@@ -14,15 +13,6 @@ finished runs are kept, so running the command again after an interruption
 continues, and several invocations on different points may run side by
 side.
 
-usage (in the case directory):
-  mixing [--points no-plates:10000:2.0,...] [--time T] [--write DT]
-         [--final T] [-np RANKS] [-j JOBS] [key=value ...]
-  --points  VESSEL:N:U, comma-separated; VESSEL plates or no-plates
-            (default: the papers' points, see POINTS)
-  --time    simulated time per run [s] (default 4)
-  --write   particle output interval [s] (default 0.1; sets this copy's
-            system/controlDict writeInterval)
-  --final   M_final is the mean over the last T seconds (default 1.0)
 Results: mixing.txt (every finished run), mixing.csv, and a figure per bed,
 mixing_<vessel>_n<N>.png (M_papers and M_Lacey, left-right, against time);
 snapshots like the draft-plate paper's Figs 8-9 per run,
@@ -33,32 +23,21 @@ postProcessing/mixingParticles/particles.pvd (arrays label_left-right,
 label_lower-upper).
 """
 import argparse
-import importlib.machinery
-import importlib.util
 import os
 import re
 import sys
 
-sys.path.insert(0, os.path.join(os.environ.get('SPOUTLAB_DIR', '../..'), 'etc', 'python'))
-import mixing  # noqa: E402
-import spoutedbed  # noqa: E402
-import spoutlab_case as sc  # noqa: E402
+from spoutlab import casefiles as sc
+from spoutlab import cli
+from spoutlab import mixing
+from spoutlab import spoutedbed
+from spoutlab.protocols import circulation
 
 # draft-plate paper Fig 10a/b and no-draft paper Fig 6 (26 000 at 2.0 m/s),
 # the draft-plate bed at 2.0; the results' keys first
 POINTS = [('no-plates', 10000, 2.0), ('no-plates', 26000, 2.5), ('no-plates', 26000, 3.0),
           ('plates', 26000, 2.0), ('no-plates', 26000, 2.2), ('no-plates', 26000, 2.7),
           ('no-plates', 10000, 2.5), ('no-plates', 10000, 3.0), ('no-plates', 26000, 2.0)]
-
-
-def circulation_module():
-    """protocols/circulation, whose run machinery this protocol shares."""
-    path = os.path.join(os.path.dirname(os.path.abspath(__file__)), 'circulation')
-    loader = importlib.machinery.SourceFileLoader('circulation', path)
-    spec = importlib.util.spec_from_loader('circulation', loader)
-    module = importlib.util.module_from_spec(spec)
-    loader.exec_module(module)
-    return module
 
 
 def point(text):
@@ -73,21 +52,25 @@ def point(text):
 
 
 def parse(argv):
-    p = argparse.ArgumentParser(prog='mixing', description=__doc__.split('\n\n')[0])
+    p = cli.parser('mixing', __doc__)
     p.add_argument('--points', type=lambda s: [point(t) for t in s.split(',')],
-                   default=POINTS)
-    p.add_argument('--time', type=float, default=4.0)
-    p.add_argument('--write', type=float, default=0.1)
-    p.add_argument('--final', type=float, default=1.0)
-    p.add_argument('-np', type=int, default=1)
-    p.add_argument('-j', '--jobs', type=int, default=1)
-    p.add_argument('overrides', nargs='*', metavar='key=value')
-    a = p.parse_args(argv)
+                   default=POINTS, metavar='VESSEL:N:U,...',
+                   help='runs as vessel (plates or no-plates), particles and superficial '
+                        'velocity [m/s] (default: the papers\' points, see POINTS)')
+    p.add_argument('--time', type=float, default=4.0, metavar='T',
+                   help='simulated time per run [s] (default %(default)s)')
+    p.add_argument('--write', type=float, default=0.1, metavar='DT',
+                   help='particle output interval [s] (default %(default)s; sets this '
+                        'copy\'s system/controlDict writeInterval)')
+    p.add_argument('--final', type=float, default=1.0, metavar='T',
+                   help='M_final is the mean over the last T seconds (default %(default)s)')
+    p.add_argument('-np', type=int, default=1, metavar='RANKS', help='MPI ranks per run')
+    p.add_argument('-j', '--jobs', type=int, default=1, metavar='JOBS',
+                   help='runs side by side (default %(default)s)')
+    cli.add_overrides(p, 'system/spoutedBedDict for every run')
+    a = cli.parse(p, argv)
     if not 0 < a.final <= a.time or not 0 < a.write <= a.time:
         p.error('--final and --write must lie in (0, --time]')
-    bad = [o for o in a.overrides if '=' not in o]
-    if bad:
-        p.error('expected key=value overrides, got %r' % bad[0])
     return a
 
 
@@ -217,7 +200,6 @@ def set_write_interval(path, dt):
 def main(argv):
     a = parse(argv)
     set_write_interval('system/controlDict', a.write)
-    circulation = circulation_module()
     o = dict(kick='', time=a.time, average=min(1.8, a.time), np=a.np, n=None,
              overrides=a.overrides, jobs=a.jobs)
     points = [(label(v, n, u), u, ['plates=%s' % ('yes' if v == 'plates' else 'no'),
