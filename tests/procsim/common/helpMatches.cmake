@@ -1,6 +1,6 @@
 # Runs procsim with ARGS and checks that it exits 0 and prints exactly the
 # help files FILES (joined by one blank line, as the commands join them).
-#   cmake -DPROCSIM=... "-DARGS=dryer;simulate;--help" "-DFILES=a.txt;b.txt" -P help_matches.cmake
+#   cmake -DPROCSIM=... "-DARGS=dryer;simulate;--help" "-DFILES=a.txt;b.txt" -P helpMatches.cmake
 execute_process(COMMAND ${PROCSIM} ${ARGS} OUTPUT_VARIABLE out RESULT_VARIABLE status)
 set(expected "")
 set(first TRUE)
