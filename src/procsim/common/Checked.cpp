@@ -12,9 +12,6 @@
 namespace procsim
 {
 
-namespace
-{
-
 std::string trimmed(const std::string& text)
 {
     const auto b = text.find_first_not_of(" \t\r\n");
@@ -22,6 +19,9 @@ std::string trimmed(const std::string& text)
     const auto e = text.find_last_not_of(" \t\r\n");
     return text.substr(b, e - b + 1);
 }
+
+namespace
+{
 
 std::string approx(double v) { return formatNumber(v, 3); }
 

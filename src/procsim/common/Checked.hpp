@@ -10,6 +10,9 @@
 namespace procsim
 {
 
+// `text` without the blanks (space, tab, CR, LF) around it.
+std::string trimmed(const std::string& text);
+
 // The whole of `text` (surrounding blanks allowed) as a finite number, or
 // nothing: "12.5abc", "", "inf", ".nan" and overflowing values like 1e400
 // are all refused.  YAML's ".inf"/".nan" spellings are refused too.

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "common/Checked.hpp"
 #include "common/Csv.hpp"
 
 namespace procsim::kinetics
@@ -11,18 +12,10 @@ namespace procsim::kinetics
 namespace
 {
 
-std::string trim(const std::string& s)
-{
-    const auto b = s.find_first_not_of(" \t");
-    if (b == std::string::npos) return "";
-    const auto e = s.find_last_not_of(" \t");
-    return s.substr(b, e - b + 1);
-}
-
 // "2 CO2" -> {2, "CO2"}; "CO2" -> {1, "CO2"}
 std::pair<double, std::string> parseTerm(const std::string& raw, const YamlInput& where)
 {
-    const std::string t = trim(raw);
+    const std::string t = trimmed(raw);
     std::istringstream is(t);
     double coef = 1;
     std::string name;
@@ -40,7 +33,7 @@ std::pair<double, std::string> parseTerm(const std::string& raw, const YamlInput
 std::vector<std::string> splitPlus(const std::string& side)
 {
     std::vector<std::string> out;
-    if (trim(side).empty()) return out;
+    if (trimmed(side).empty()) return out;
     std::size_t start = 0;
     while (true)
     {
