@@ -13,14 +13,16 @@
 
 #include "DragModel.hpp"
 
-namespace spoutlab {
+namespace spoutlab
+{
 
-class Beetstra : public DragModel {
- public:
-  explicit Beetstra(const Parameters& props);
+class Beetstra : public DragModel
+{
+public:
+    explicit Beetstra(const Parameters& props);
 
-  double beta(const DragState& state, const GasProperties& gas) const override;
-  std::string name() const override { return "Beetstra"; }
+    double beta(const DragState& state, const GasProperties& gas) const override;
+    std::string name() const override { return "Beetstra"; }
 };
 
-}  // namespace spoutlab
+} // namespace spoutlab

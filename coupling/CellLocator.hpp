@@ -8,44 +8,46 @@
 
 #include <vector>
 
-namespace spoutlab {
+namespace spoutlab
+{
 
 using label = long;
 
-class CellLocator {
- public:
-  virtual ~CellLocator();
+class CellLocator
+{
+public:
+    virtual ~CellLocator();
 
-  virtual label nCells() const = 0;
-  virtual double cellVolume(label cell) const = 0;
+    virtual label nCells() const = 0;
+    virtual double cellVolume(label cell) const = 0;
 
-  // The cell containing p, or -1 if p is outside the mesh. hint is a nearby
-  // cell (or -1): meshes that search by walking start there.
-  virtual label findCell(const Vec3& p, label hint) const = 0;
+    // The cell containing p, or -1 if p is outside the mesh. hint is a nearby
+    // cell (or -1): meshes that search by walking start there.
+    virtual label findCell(const Vec3& p, label hint) const = 0;
 
-  // True if the whole sphere lies inside this cell. Lets the void-fraction
-  // models skip sampling for the common case of a particle well inside a cell;
-  // a conservative "false" is always allowed.
-  virtual bool sphereInsideCell(label cell, const Vec3& centre, double radius) const = 0;
+    // True if the whole sphere lies inside this cell. Lets the void-fraction
+    // models skip sampling for the common case of a particle well inside a cell;
+    // a conservative "false" is always allowed.
+    virtual bool sphereInsideCell(label cell, const Vec3& centre, double radius) const = 0;
 
-  // The cells of the points centre + radius * units[k], each as findCell
-  // with the centre's cell as hint (the sample points of a divided
-  // particle). Meshes may skip the search for points that cannot have left
-  // the centre's cell; the answers must be findCell's.
-  virtual void findCells(const Vec3& centre, double radius, const std::vector<Vec3>& units,
-                         label centreCell, std::vector<label>& cells) const;
+    // The cells of the points centre + radius * units[k], each as findCell
+    // with the centre's cell as hint (the sample points of a divided
+    // particle). Meshes may skip the search for points that cannot have left
+    // the centre's cell; the answers must be findCell's.
+    virtual void findCells(const Vec3& centre, double radius, const std::vector<Vec3>& units,
+                           label centreCell, std::vector<label>& cells) const;
 
-  // Parallel runs. The cells of neighbouring ranks that this rank's
-  // particles reach (halo cells) are numbered after its own, and nCells()
-  // counts both; findCell() and cellVolume() know them. complete() takes a
-  // per-cell sum over this rank's particles (width values per cell), adds
-  // each halo cell's share into its owner's entry and copies the owners'
-  // totals back, so every cell the rank sees holds the sum over all ranks'
-  // particles. A mesh without a halo (serial) has nothing to do.
-  virtual void complete(std::vector<double>& values, int width) const;
+    // Parallel runs. The cells of neighbouring ranks that this rank's
+    // particles reach (halo cells) are numbered after its own, and nCells()
+    // counts both; findCell() and cellVolume() know them. complete() takes a
+    // per-cell sum over this rank's particles (width values per cell), adds
+    // each halo cell's share into its owner's entry and copies the owners'
+    // totals back, so every cell the rank sees holds the sum over all ranks'
+    // particles. A mesh without a halo (serial) has nothing to do.
+    virtual void complete(std::vector<double>& values, int width) const;
 };
 
 // complete() for a per-cell vector field
 void completeVectors(const CellLocator& mesh, std::vector<Vec3>& values);
 
-}  // namespace spoutlab
+} // namespace spoutlab

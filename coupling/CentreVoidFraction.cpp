@@ -1,6 +1,7 @@
 #include "CentreVoidFraction.hpp"
 
-namespace spoutlab {
+namespace spoutlab
+{
 
 // selected by "voidFractionModel centre;"
 const Registration<VoidFractionModel, CentreVoidFraction> registeredCentreVoidFraction("centre");
@@ -8,8 +9,9 @@ const Registration<VoidFractionModel, CentreVoidFraction> registeredCentreVoidFr
 CentreVoidFraction::CentreVoidFraction(const Parameters& props) : VoidFractionModel(props) {}
 
 void CentreVoidFraction::distribute(const CellLocator&, const Particle&, label centreCell,
-                                    std::vector<CellWeight>& row) const {
-  row.push_back({centreCell, 1.0});
+                                    std::vector<CellWeight>& row) const
+{
+    row.push_back({centreCell, 1.0});
 }
 
-}  // namespace spoutlab
+} // namespace spoutlab

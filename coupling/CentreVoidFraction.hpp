@@ -5,16 +5,18 @@
 
 #include "VoidFractionModel.hpp"
 
-namespace spoutlab {
+namespace spoutlab
+{
 
-class CentreVoidFraction : public VoidFractionModel {
- public:
-  explicit CentreVoidFraction(const Parameters& props);
-  std::string name() const override { return "centre"; }
+class CentreVoidFraction : public VoidFractionModel
+{
+public:
+    explicit CentreVoidFraction(const Parameters& props);
+    std::string name() const override { return "centre"; }
 
- protected:
-  void distribute(const CellLocator& mesh, const Particle& p, label centreCell,
-                  std::vector<CellWeight>& row) const override;
+protected:
+    void distribute(const CellLocator& mesh, const Particle& p, label centreCell,
+                    std::vector<CellWeight>& row) const override;
 };
 
-}  // namespace spoutlab
+} // namespace spoutlab

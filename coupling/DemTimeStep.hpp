@@ -5,11 +5,13 @@
 
 #include <cmath>
 
-namespace spoutlab {
+namespace spoutlab
+{
 
 // massMin [kg], stiffness k [N/m] -> time step [s]
-inline double demTimeStepLimit(double massMin, double stiffness) {
-  return std::acos(-1.0) * std::sqrt(massMin / stiffness) / 5.0;
+inline double demTimeStepLimit(double massMin, double stiffness)
+{
+    return std::acos(-1.0) * std::sqrt(massMin / stiffness) / 5.0;
 }
 
-}  // namespace spoutlab
+} // namespace spoutlab

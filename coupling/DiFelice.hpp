@@ -10,14 +10,16 @@
 
 #include "DragModel.hpp"
 
-namespace spoutlab {
+namespace spoutlab
+{
 
-class DiFelice : public DragModel {
- public:
-  explicit DiFelice(const Parameters& props);
+class DiFelice : public DragModel
+{
+public:
+    explicit DiFelice(const Parameters& props);
 
-  double beta(const DragState& state, const GasProperties& gas) const override;
-  std::string name() const override { return "DiFelice"; }
+    double beta(const DragState& state, const GasProperties& gas) const override;
+    std::string name() const override { return "DiFelice"; }
 };
 
-}  // namespace spoutlab
+} // namespace spoutlab

@@ -20,23 +20,25 @@
 
 #include "VoidFractionModel.hpp"
 
-namespace spoutlab {
+namespace spoutlab
+{
 
-class DividedVoidFraction : public VoidFractionModel {
- public:
-  explicit DividedVoidFraction(const Parameters& props);
-  std::string name() const override { return "divided"; }
+class DividedVoidFraction : public VoidFractionModel
+{
+public:
+    explicit DividedVoidFraction(const Parameters& props);
+    std::string name() const override { return "divided"; }
 
-  // Centroids of the equal-volume pieces of the unit ball, in the orientation
-  // used for sampling (multiply by the radius and add the centre).
-  const std::vector<Vec3>& unitSamplePoints() const { return samples_; }
+    // Centroids of the equal-volume pieces of the unit ball, in the orientation
+    // used for sampling (multiply by the radius and add the centre).
+    const std::vector<Vec3>& unitSamplePoints() const { return samples_; }
 
- protected:
-  void distribute(const CellLocator& mesh, const Particle& p, label centreCell,
-                  std::vector<CellWeight>& row) const override;
+protected:
+    void distribute(const CellLocator& mesh, const Particle& p, label centreCell,
+                    std::vector<CellWeight>& row) const override;
 
- private:
-  std::vector<Vec3> samples_;
+private:
+    std::vector<Vec3> samples_;
 };
 
-}  // namespace spoutlab
+} // namespace spoutlab

@@ -17,37 +17,41 @@
 #include <string>
 #include <vector>
 
-namespace spoutlab {
+namespace spoutlab
+{
 
-struct GasProperties {
-  double rho;  // density [kg/m^3]
-  double mu;   // dynamic viscosity [Pa s]
+struct GasProperties
+{
+    double rho; // density [kg/m^3]
+    double mu;  // dynamic viscosity [Pa s]
 };
 
 // Local state the drag law needs. Preconditions: 0 < voidFraction <= 1,
 // diameter > 0, slip >= 0.
-struct DragState {
-  double voidFraction;  // eps, gas volume fraction
-  double diameter;      // d_p [m] (Sauter mean for a mixture)
-  double slip;          // |u - Us| [m/s], interstitial gas velocity minus particle velocity
+struct DragState
+{
+    double voidFraction; // eps, gas volume fraction
+    double diameter;     // d_p [m] (Sauter mean for a mixture)
+    double slip;         // |u - Us| [m/s], interstitial gas velocity minus particle velocity
 };
 
 // Particle Reynolds number on the superficial slip, Re = eps rho |w| d / mu,
 // the definition shared by Gidaspow, Di Felice and Beetstra.
 double particleReynolds(const DragState& s, const GasProperties& gas);
 
-class DragModel {
- public:
-  virtual ~DragModel();
+class DragModel
+{
+public:
+    virtual ~DragModel();
 
-  virtual double beta(const DragState& state, const GasProperties& gas) const = 0;
-  virtual std::string name() const = 0;
+    virtual double beta(const DragState& state, const GasProperties& gas) const = 0;
+    virtual std::string name() const = 0;
 
-  // Run-time selection by name (the couplingProperties entry "dragModel"); a
-  // law joins the registry from its own .cpp (ModelRegistry.hpp).
-  static ModelRegistry<DragModel>& registry();
-  static std::unique_ptr<DragModel> New(const std::string& typeName, const Parameters& props);
-  static std::vector<std::string> available();
+    // Run-time selection by name (the couplingProperties entry "dragModel"); a
+    // law joins the registry from its own .cpp (ModelRegistry.hpp).
+    static ModelRegistry<DragModel>& registry();
+    static std::unique_ptr<DragModel> New(const std::string& typeName, const Parameters& props);
+    static std::vector<std::string> available();
 };
 
-}  // namespace spoutlab
+} // namespace spoutlab

@@ -15,18 +15,20 @@
 
 #include "DragModel.hpp"
 
-namespace spoutlab {
+namespace spoutlab
+{
 
-class Gidaspow : public DragModel {
- public:
-  explicit Gidaspow(const Parameters& props);
+class Gidaspow : public DragModel
+{
+public:
+    explicit Gidaspow(const Parameters& props);
 
-  double beta(const DragState& state, const GasProperties& gas) const override;
-  std::string name() const override { return "Gidaspow"; }
+    double beta(const DragState& state, const GasProperties& gas) const override;
+    std::string name() const override { return "Gidaspow"; }
 
- private:
-  bool smooth_;
-  double epsilonSwitch_;
+private:
+    bool smooth_;
+    double epsilonSwitch_;
 };
 
-}  // namespace spoutlab
+} // namespace spoutlab

@@ -2,21 +2,23 @@
 
 #include <cmath>
 
-namespace spoutlab {
+namespace spoutlab
+{
 
 // selected by "heatTransferModel Gunn;"
 const Registration<HeatTransferModel, Gunn> registeredGunn("Gunn");
 
 Gunn::Gunn(const Parameters&) {}
 
-double Gunn::h(const HeatTransferCell& cell, const GasThermalProperties& gas) const {
-  const double eps = cell.voidFraction;
-  const double re = heatTransferReynolds(cell, gas);
-  const double pr3 = std::cbrt(gas.prandtl());
-  // The first term dominates at low Re, the second at high Re.
-  const double lowRe = (7.0 - 10.0 * eps + 5.0 * eps * eps) * (1.0 + 0.7 * std::pow(re, 0.2) * pr3);
-  const double highRe = (1.33 - 2.4 * eps + 1.2 * eps * eps) * std::pow(re, 0.7) * pr3;
-  return (lowRe + highRe) * gas.kappa / cell.diameter;
+double Gunn::h(const HeatTransferCell& cell, const GasThermalProperties& gas) const
+{
+    const double eps = cell.voidFraction;
+    const double re = heatTransferReynolds(cell, gas);
+    const double pr3 = std::cbrt(gas.prandtl());
+    // The first term dominates at low Re, the second at high Re.
+    const double lowRe = (7.0 - 10.0 * eps + 5.0 * eps * eps) * (1.0 + 0.7 * std::pow(re, 0.2) * pr3);
+    const double highRe = (1.33 - 2.4 * eps + 1.2 * eps * eps) * std::pow(re, 0.7) * pr3;
+    return (lowRe + highRe) * gas.kappa / cell.diameter;
 }
 
-}  // namespace spoutlab
+} // namespace spoutlab

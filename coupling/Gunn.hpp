@@ -10,14 +10,16 @@
 
 #include "HeatTransferModel.hpp"
 
-namespace spoutlab {
+namespace spoutlab
+{
 
-class Gunn : public HeatTransferModel {
- public:
-  explicit Gunn(const Parameters& props);
+class Gunn : public HeatTransferModel
+{
+public:
+    explicit Gunn(const Parameters& props);
 
-  double h(const HeatTransferCell& cell, const GasThermalProperties& gas) const override;
-  std::string name() const override { return "Gunn"; }
+    double h(const HeatTransferCell& cell, const GasThermalProperties& gas) const override;
+    std::string name() const override { return "Gunn"; }
 };
 
-}  // namespace spoutlab
+} // namespace spoutlab

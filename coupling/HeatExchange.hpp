@@ -23,48 +23,49 @@
 #include <memory>
 #include <vector>
 
-namespace spoutlab {
+namespace spoutlab
+{
 
 // Gas fields per cell that the heat-transfer coefficient depends on (not owned).
-struct GasHeatCellFields {
-  const std::vector<Vec3>& centre;           // cell centres [m]
-  const std::vector<Vec3>& U;                // interstitial gas velocity [m/s]
-  const std::vector<double>& voidFraction;   // eps, clipped as for the drag
+struct GasHeatCellFields
+{
+    const std::vector<Vec3>& centre;         // cell centres [m]
+    const std::vector<Vec3>& U;              // interstitial gas velocity [m/s]
+    const std::vector<double>& voidFraction; // eps, clipped as for the drag
 };
 
-struct HeatCellCoefficients {
-  std::vector<double> h;         // [W m^-2 K^-1]; 0 where there is no solid
-  std::vector<double> reynolds;  // Re = eps rho |Us - u| d/mu; 0 where there is no solid
-  std::vector<int> region;       // 1 spout, 0 downcomer, -1 no rule or no solid
-  std::vector<double> K;         // implicit coefficient [W m^-3 K^-1]
-  std::vector<double> S;         // explicit part [W m^-3]
+struct HeatCellCoefficients
+{
+    std::vector<double> h;        // [W m^-2 K^-1]; 0 where there is no solid
+    std::vector<double> reynolds; // Re = eps rho |Us - u| d/mu; 0 where there is no solid
+    std::vector<int> region;      // 1 spout, 0 downcomer, -1 no rule or no solid
+    std::vector<double> K;        // implicit coefficient [W m^-3 K^-1]
+    std::vector<double> S;        // explicit part [W m^-3]
 };
 
-class HeatExchange {
- public:
-  explicit HeatExchange(std::unique_ptr<HeatTransferModel> model);
+class HeatExchange
+{
+public:
+    explicit HeatExchange(std::unique_ptr<HeatTransferModel> model);
 
-  const HeatTransferModel& model() const { return *model_; }
+    const HeatTransferModel& model() const { return *model_; }
 
-  // momentum: the cell averages (Us, Sauter diameter) of the same step.
-  HeatCellCoefficients cellCoefficients(const CellLocator& mesh,
-                                        const std::vector<Particle>& particles,
-                                        const ParticleCellMap& map, const ExchangeResult& momentum,
-                                        const GasHeatCellFields& gasFields,
-                                        const GasThermalProperties& gas) const;
+    // momentum: the cell averages (Us, Sauter diameter) of the same step.
+    HeatCellCoefficients cellCoefficients(const CellLocator& mesh, const std::vector<Particle>& particles,
+                                          const ParticleCellMap& map, const ExchangeResult& momentum,
+                                          const GasHeatCellFields& gasFields,
+                                          const GasThermalProperties& gas) const;
 
-  // q_i [W into particle i] for the gas temperatures Tgas [K] per cell.
-  std::vector<double> particleHeatFlux(const std::vector<Particle>& particles,
-                                       const ParticleCellMap& map,
-                                       const HeatCellCoefficients& cells,
-                                       const std::vector<double>& Tgas) const;
+    // q_i [W into particle i] for the gas temperatures Tgas [K] per cell.
+    std::vector<double> particleHeatFlux(const std::vector<Particle>& particles, const ParticleCellMap& map,
+                                         const HeatCellCoefficients& cells,
+                                         const std::vector<double>& Tgas) const;
 
-  // The coefficient each particle sees, sum_c w_ic h_c (for output).
-  static std::vector<double> particleH(const ParticleCellMap& map,
-                                       const HeatCellCoefficients& cells);
+    // The coefficient each particle sees, sum_c w_ic h_c (for output).
+    static std::vector<double> particleH(const ParticleCellMap& map, const HeatCellCoefficients& cells);
 
- private:
-  std::unique_ptr<HeatTransferModel> model_;
+private:
+    std::unique_ptr<HeatTransferModel> model_;
 };
 
-}  // namespace spoutlab
+} // namespace spoutlab

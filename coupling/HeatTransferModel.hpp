@@ -20,49 +20,52 @@
 #include <string>
 #include <vector>
 
-namespace spoutlab {
+namespace spoutlab
+{
 
 // Gas properties the energy equation and the correlations need, constant at a
 // film temperature (assumption (i) of the paper).
-struct GasThermalProperties {
-  double rho;    // density [kg/m^3]
-  double mu;     // dynamic viscosity [Pa s]
-  double cp;     // specific heat at constant pressure [J/(kg K)]
-  double kappa;  // thermal conductivity k_c [W/(m K)]
+struct GasThermalProperties
+{
+    double rho;   // density [kg/m^3]
+    double mu;    // dynamic viscosity [Pa s]
+    double cp;    // specific heat at constant pressure [J/(kg K)]
+    double kappa; // thermal conductivity k_c [W/(m K)]
 
-  double prandtl() const { return cp * mu / kappa; }
+    double prandtl() const { return cp * mu / kappa; }
 };
 
 // What a heat-transfer model sees of one gas cell that holds solid.
 // Preconditions: 0 < voidFraction <= 1, diameter > 0, slip >= 0.
-struct HeatTransferCell {
-  Vec3 centre;          // cell centre [m] (for region rules)
-  double voidFraction;  // eps (clipped as for the drag)
-  double diameter;      // d_p [m], Sauter mean of the cell's particles
-  double slip;          // |Us - u| [m/s]
+struct HeatTransferCell
+{
+    Vec3 centre;         // cell centre [m] (for region rules)
+    double voidFraction; // eps (clipped as for the drag)
+    double diameter;     // d_p [m], Sauter mean of the cell's particles
+    double slip;         // |Us - u| [m/s]
 };
 
 // The paper's particle Reynolds number, Re = eps rho |Us - u| d / mu.
 double heatTransferReynolds(const HeatTransferCell& cell, const GasThermalProperties& gas);
 
-class HeatTransferModel {
- public:
-  virtual ~HeatTransferModel();
+class HeatTransferModel
+{
+public:
+    virtual ~HeatTransferModel();
 
-  // Heat-transfer coefficient h [W m^-2 K^-1] in this cell.
-  virtual double h(const HeatTransferCell& cell, const GasThermalProperties& gas) const = 0;
+    // Heat-transfer coefficient h [W m^-2 K^-1] in this cell.
+    virtual double h(const HeatTransferCell& cell, const GasThermalProperties& gas) const = 0;
 
-  // 1 where the cell counts as spout, 0 where it counts as downcomer, for
-  // models that tell the two apart; -1 for a single correlation everywhere.
-  virtual int region(const HeatTransferCell& cell) const;
+    // 1 where the cell counts as spout, 0 where it counts as downcomer, for
+    // models that tell the two apart; -1 for a single correlation everywhere.
+    virtual int region(const HeatTransferCell& cell) const;
 
-  virtual std::string name() const = 0;
+    virtual std::string name() const = 0;
 
-  // Run-time selection; a correlation joins the registry from its own .cpp.
-  static ModelRegistry<HeatTransferModel>& registry();
-  static std::unique_ptr<HeatTransferModel> New(const std::string& typeName,
-                                                const Parameters& props);
-  static std::vector<std::string> available();
+    // Run-time selection; a correlation joins the registry from its own .cpp.
+    static ModelRegistry<HeatTransferModel>& registry();
+    static std::unique_ptr<HeatTransferModel> New(const std::string& typeName, const Parameters& props);
+    static std::vector<std::string> available();
 };
 
-}  // namespace spoutlab
+} // namespace spoutlab

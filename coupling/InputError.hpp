@@ -6,11 +6,13 @@
 #include <stdexcept>
 #include <string>
 
-namespace spoutlab {
+namespace spoutlab
+{
 
-class InputError : public std::runtime_error {
- public:
-  explicit InputError(const std::string& message) : std::runtime_error(message) {}
+class InputError : public std::runtime_error
+{
+public:
+    explicit InputError(const std::string& message) : std::runtime_error(message) {}
 };
 
-}  // namespace spoutlab
+} // namespace spoutlab

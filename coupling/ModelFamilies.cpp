@@ -4,20 +4,24 @@
 #include "HeatTransferModel.hpp"
 #include "VoidFractionModel.hpp"
 
-namespace spoutlab {
+namespace spoutlab
+{
 
-namespace {
+namespace
+{
 
 template <class Base>
-ModelFamily familyOf() {
-  const ModelRegistry<Base>& registry = Base::registry();
-  return {registry.key(), registry.namesList()};
+ModelFamily familyOf()
+{
+    const ModelRegistry<Base>& registry = Base::registry();
+    return {registry.key(), registry.namesList()};
 }
 
-}  // namespace
+} // namespace
 
-std::vector<ModelFamily> modelFamilies() {
-  return {familyOf<DragModel>(), familyOf<VoidFractionModel>(), familyOf<HeatTransferModel>()};
+std::vector<ModelFamily> modelFamilies()
+{
+    return {familyOf<DragModel>(), familyOf<VoidFractionModel>(), familyOf<HeatTransferModel>()};
 }
 
-}  // namespace spoutlab
+} // namespace spoutlab

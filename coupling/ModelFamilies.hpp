@@ -7,13 +7,15 @@
 #include <string>
 #include <vector>
 
-namespace spoutlab {
+namespace spoutlab
+{
 
-struct ModelFamily {
-  std::string key;    // the couplingProperties entry that selects it, e.g. "dragModel"
-  std::string names;  // as the errors list them: "Beetstra, DiFelice, Gidaspow"
+struct ModelFamily
+{
+    std::string key;   // the couplingProperties entry that selects it, e.g. "dragModel"
+    std::string names; // as the errors list them: "Beetstra, DiFelice, Gidaspow"
 };
 
 std::vector<ModelFamily> modelFamilies();
 
-}  // namespace spoutlab
+} // namespace spoutlab

@@ -26,49 +26,52 @@
 #include <memory>
 #include <vector>
 
-namespace spoutlab {
+namespace spoutlab
+{
 
 // Gas fields per cell, as the solver holds them (not owned).
-struct GasCellFields {
-  const std::vector<Vec3>& U;                // interstitial gas velocity [m/s]
-  const std::vector<Vec3>& gradP;            // grad(p - hydrostatic) [Pa/m]
-  const std::vector<double>& voidFraction;   // eps, clipped for the drag law
+struct GasCellFields
+{
+    const std::vector<Vec3>& U;              // interstitial gas velocity [m/s]
+    const std::vector<Vec3>& gradP;          // grad(p - hydrostatic) [Pa/m]
+    const std::vector<double>& voidFraction; // eps, clipped for the drag law
 };
 
-struct ExchangeResult {
-  // per cell
-  std::vector<double> beta;            // Ksl [kg m^-3 s^-1]; 0 where there is no solid
-  std::vector<Vec3> Us;                // [m/s]; 0 where there is no solid
-  std::vector<double> solidFraction;   // phi = S/V, not clipped
-  std::vector<double> sauterDiameter;  // [m]; 0 where there is no solid
-  // per particle [N]
-  std::vector<Vec3> dragForce;
-  std::vector<Vec3> pressureForce;     // pressure gradient + buoyancy
-  std::vector<Vec3> totalForce;
+struct ExchangeResult
+{
+    // per cell
+    std::vector<double> beta;           // Ksl [kg m^-3 s^-1]; 0 where there is no solid
+    std::vector<Vec3> Us;               // [m/s]; 0 where there is no solid
+    std::vector<double> solidFraction;  // phi = S/V, not clipped
+    std::vector<double> sauterDiameter; // [m]; 0 where there is no solid
+    // per particle [N]
+    std::vector<Vec3> dragForce;
+    std::vector<Vec3> pressureForce; // pressure gradient + buoyancy
+    std::vector<Vec3> totalForce;
 };
 
-class MomentumExchange {
- public:
-  explicit MomentumExchange(std::unique_ptr<DragModel> drag);
+class MomentumExchange
+{
+public:
+    explicit MomentumExchange(std::unique_ptr<DragModel> drag);
 
-  const DragModel& drag() const { return *drag_; }
+    const DragModel& drag() const { return *drag_; }
 
-  // Throws std::invalid_argument if the field or map sizes do not match the
-  // mesh and the particle list.
-  ExchangeResult compute(const CellLocator& mesh, const std::vector<Particle>& particles,
-                         const VoidFractionResult& voidFraction, const GasCellFields& gasFields,
-                         const GasProperties& gas, const Vec3& g) const;
+    // Throws std::invalid_argument if the field or map sizes do not match the
+    // mesh and the particle list.
+    ExchangeResult compute(const CellLocator& mesh, const std::vector<Particle>& particles,
+                           const VoidFractionResult& voidFraction, const GasCellFields& gasFields,
+                           const GasProperties& gas, const Vec3& g) const;
 
- private:
-  void cellAverages(const CellLocator& mesh, const std::vector<Particle>& particles,
-                    const ParticleCellMap& map, ExchangeResult& out) const;
-  void cellBeta(const GasCellFields& gasFields, const GasProperties& gas,
-                ExchangeResult& out) const;
-  void particleForces(const std::vector<Particle>& particles, const VoidFractionResult& vf,
-                      const GasCellFields& gasFields, const GasProperties& gas, const Vec3& g,
-                      ExchangeResult& out) const;
+private:
+    void cellAverages(const CellLocator& mesh, const std::vector<Particle>& particles,
+                      const ParticleCellMap& map, ExchangeResult& out) const;
+    void cellBeta(const GasCellFields& gasFields, const GasProperties& gas, ExchangeResult& out) const;
+    void particleForces(const std::vector<Particle>& particles, const VoidFractionResult& vf,
+                        const GasCellFields& gasFields, const GasProperties& gas, const Vec3& g,
+                        ExchangeResult& out) const;
 
-  std::unique_ptr<DragModel> drag_;
+    std::unique_ptr<DragModel> drag_;
 };
 
-}  // namespace spoutlab
+} // namespace spoutlab

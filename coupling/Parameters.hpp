@@ -10,37 +10,39 @@
 #include <map>
 #include <string>
 
-namespace spoutlab {
+namespace spoutlab
+{
 
-class Parameters {
- public:
-  explicit Parameters(std::string context = "parameters");
+class Parameters
+{
+public:
+    explicit Parameters(std::string context = "parameters");
 
-  const std::string& context() const { return context_; }
+    const std::string& context() const { return context_; }
 
-  Parameters& set(const std::string& key, const std::string& value);
-  bool has(const std::string& key) const;
+    Parameters& set(const std::string& key, const std::string& value);
+    bool has(const std::string& key) const;
 
-  // Throw InputError if the key is missing or its value is not a finite number.
-  double getScalar(const std::string& key) const;
-  double getScalar(const std::string& key, double defaultValue) const;
+    // Throw InputError if the key is missing or its value is not a finite number.
+    double getScalar(const std::string& key) const;
+    double getScalar(const std::string& key, double defaultValue) const;
 
-  // Like getScalar, but the value must also be a whole number.
-  long getInteger(const std::string& key) const;
-  long getInteger(const std::string& key, long defaultValue) const;
+    // Like getScalar, but the value must also be a whole number.
+    long getInteger(const std::string& key) const;
+    long getInteger(const std::string& key, long defaultValue) const;
 
-  std::string getWord(const std::string& key) const;
-  std::string getWord(const std::string& key, const std::string& defaultValue) const;
+    std::string getWord(const std::string& key) const;
+    std::string getWord(const std::string& key, const std::string& defaultValue) const;
 
-  // Build the InputError for a value that parses but is out of range, in the
-  // same one-line format as the errors above.
-  InputError badValue(const std::string& key, const std::string& expected) const;
+    // Build the InputError for a value that parses but is out of range, in the
+    // same one-line format as the errors above.
+    InputError badValue(const std::string& key, const std::string& expected) const;
 
- private:
-  const std::string& require(const std::string& key, const std::string& expected) const;
+private:
+    const std::string& require(const std::string& key, const std::string& expected) const;
 
-  std::string context_;
-  std::map<std::string, std::string> entries_;
+    std::string context_;
+    std::map<std::string, std::string> entries_;
 };
 
-}  // namespace spoutlab
+} // namespace spoutlab

@@ -6,17 +6,19 @@
 
 #include <cmath>
 
-namespace spoutlab {
+namespace spoutlab
+{
 
-struct Particle {
-  long id = 0;  // LIGGGHTS atom id, kept to push forces back to the right atom
-  Vec3 x;       // centre [m]
-  Vec3 v;       // velocity [m/s]
-  double radius = 0.0;  // [m]
-  double temperature = 0.0;  // [K]; 0 when the run has no heat transfer
+struct Particle
+{
+    long id = 0;              // LIGGGHTS atom id, kept to push forces back to the right atom
+    Vec3 x;                   // centre [m]
+    Vec3 v;                   // velocity [m/s]
+    double radius = 0.0;      // [m]
+    double temperature = 0.0; // [K]; 0 when the run has no heat transfer
 
-  double volume() const { return 4.0 / 3.0 * std::acos(-1.0) * radius * radius * radius; }
-  double surface() const { return 4.0 * std::acos(-1.0) * radius * radius; }
+    double volume() const { return 4.0 / 3.0 * std::acos(-1.0) * radius * radius * radius; }
+    double surface() const { return 4.0 * std::acos(-1.0) * radius * radius; }
 };
 
-}  // namespace spoutlab
+} // namespace spoutlab

@@ -8,14 +8,16 @@
 
 #include "HeatTransferModel.hpp"
 
-namespace spoutlab {
+namespace spoutlab
+{
 
-class RanzMarshall : public HeatTransferModel {
- public:
-  explicit RanzMarshall(const Parameters& props);
+class RanzMarshall : public HeatTransferModel
+{
+public:
+    explicit RanzMarshall(const Parameters& props);
 
-  double h(const HeatTransferCell& cell, const GasThermalProperties& gas) const override;
-  std::string name() const override { return "RanzMarshall"; }
+    double h(const HeatTransferCell& cell, const GasThermalProperties& gas) const override;
+    std::string name() const override { return "RanzMarshall"; }
 };
 
-}  // namespace spoutlab
+} // namespace spoutlab

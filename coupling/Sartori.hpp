@@ -10,14 +10,16 @@
 
 #include "HeatTransferModel.hpp"
 
-namespace spoutlab {
+namespace spoutlab
+{
 
-class Sartori : public HeatTransferModel {
- public:
-  explicit Sartori(const Parameters& props);
+class Sartori : public HeatTransferModel
+{
+public:
+    explicit Sartori(const Parameters& props);
 
-  double h(const HeatTransferCell& cell, const GasThermalProperties& gas) const override;
-  std::string name() const override { return "Sartori"; }
+    double h(const HeatTransferCell& cell, const GasThermalProperties& gas) const override;
+    std::string name() const override { return "Sartori"; }
 };
 
-}  // namespace spoutlab
+} // namespace spoutlab

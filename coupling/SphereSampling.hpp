@@ -15,20 +15,22 @@
 
 #include <vector>
 
-namespace spoutlab {
+namespace spoutlab
+{
 
-struct BallSector {
-  double rInner, rOuter;
-  double zLow, zHigh;
-  double phiLow, phiHigh;
+struct BallSector
+{
+    double rInner, rOuter;
+    double zLow, zHigh;
+    double phiLow, phiHigh;
 
-  double volume() const;
-  // Exact centroid: the radial first moment times the mean direction of the
-  // solid-angle patch.
-  Vec3 centroid() const;
+    double volume() const;
+    // Exact centroid: the radial first moment times the mean direction of the
+    // solid-angle patch.
+    Vec3 centroid() const;
 };
 
 // Throws InputError unless all counts are >= 1.
 std::vector<BallSector> equalVolumeSectors(int nShells, int nRings, int nAzimuthal);
 
-}  // namespace spoutlab
+} // namespace spoutlab

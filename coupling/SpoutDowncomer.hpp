@@ -20,24 +20,26 @@
 
 #include "HeatTransferModel.hpp"
 
-namespace spoutlab {
+namespace spoutlab
+{
 
-class SpoutDowncomer : public HeatTransferModel {
- public:
-  explicit SpoutDowncomer(const Parameters& props);
+class SpoutDowncomer : public HeatTransferModel
+{
+public:
+    explicit SpoutDowncomer(const Parameters& props);
 
-  double h(const HeatTransferCell& cell, const GasThermalProperties& gas) const override;
-  int region(const HeatTransferCell& cell) const override;
-  std::string name() const override { return "spoutDowncomer"; }
+    double h(const HeatTransferCell& cell, const GasThermalProperties& gas) const override;
+    int region(const HeatTransferCell& cell) const override;
+    std::string name() const override { return "spoutDowncomer"; }
 
- private:
-  std::unique_ptr<HeatTransferModel> spout_;
-  std::unique_ptr<HeatTransferModel> downcomer_;
-  bool byGeometry_;
-  double spoutAxis_ = 0.0;
-  double spoutHalfWidth_ = 0.0;
-  double fountainBase_ = 0.0;
-  double spoutVoidage_ = 0.0;
+private:
+    std::unique_ptr<HeatTransferModel> spout_;
+    std::unique_ptr<HeatTransferModel> downcomer_;
+    bool byGeometry_;
+    double spoutAxis_ = 0.0;
+    double spoutHalfWidth_ = 0.0;
+    double fountainBase_ = 0.0;
+    double spoutVoidage_ = 0.0;
 };
 
-}  // namespace spoutlab
+} // namespace spoutlab

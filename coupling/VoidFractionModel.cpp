@@ -2,85 +2,102 @@
 
 #include <algorithm>
 
-namespace spoutlab {
+namespace spoutlab
+{
 
-ParticleCellMap::Row ParticleCellMap::cells(std::size_t particle) const {
-  const CellWeight* base = entries_.data();
-  return {base + offsets_[particle], base + offsets_[particle + 1]};
+ParticleCellMap::Row ParticleCellMap::cells(std::size_t particle) const
+{
+    const CellWeight* base = entries_.data();
+    return {base + offsets_[particle], base + offsets_[particle + 1]};
 }
 
-void ParticleCellMap::clear() {
-  offsets_.assign(1, 0);
-  entries_.clear();
+void ParticleCellMap::clear()
+{
+    offsets_.assign(1, 0);
+    entries_.clear();
 }
 
-void ParticleCellMap::appendRow(const std::vector<CellWeight>& row) {
-  entries_.insert(entries_.end(), row.begin(), row.end());
-  offsets_.push_back(entries_.size());
+void ParticleCellMap::appendRow(const std::vector<CellWeight>& row)
+{
+    entries_.insert(entries_.end(), row.begin(), row.end());
+    offsets_.push_back(entries_.size());
 }
 
-std::vector<double> clippedVoidFraction(const CellLocator& mesh,
-                                        const std::vector<double>& solidVolume,
-                                        double voidFractionMin) {
-  std::vector<double> eps(solidVolume.size());
-  for (std::size_t c = 0; c < eps.size(); ++c) {
-    const double raw = 1.0 - solidVolume[c] / mesh.cellVolume(static_cast<label>(c));
-    eps[c] = std::max(raw, voidFractionMin);
-  }
-  return eps;
+std::vector<double> clippedVoidFraction(const CellLocator& mesh, const std::vector<double>& solidVolume,
+                                        double voidFractionMin)
+{
+    std::vector<double> eps(solidVolume.size());
+    for (std::size_t c = 0; c < eps.size(); ++c)
+    {
+        const double raw = 1.0 - solidVolume[c] / mesh.cellVolume(static_cast<label>(c));
+        eps[c] = std::max(raw, voidFractionMin);
+    }
+    return eps;
 }
 
 VoidFractionModel::VoidFractionModel(const Parameters& props)
-    : voidFractionMin_(props.getScalar("voidFractionMin", 0.3)) {
-  if (!(voidFractionMin_ > 0.0 && voidFractionMin_ < 1.0)) {
-    throw props.badValue("voidFractionMin", "a void fraction in (0, 1)");
-  }
+    : voidFractionMin_(props.getScalar("voidFractionMin", 0.3))
+{
+    if (!(voidFractionMin_ > 0.0 && voidFractionMin_ < 1.0))
+    {
+        throw props.badValue("voidFractionMin", "a void fraction in (0, 1)");
+    }
 }
 
 VoidFractionModel::~VoidFractionModel() = default;
 
 std::vector<double> VoidFractionModel::voidFraction(const CellLocator& mesh,
-                                                    const std::vector<double>& solidVolume) const {
-  return clippedVoidFraction(mesh, solidVolume, voidFractionMin_);
+                                                    const std::vector<double>& solidVolume) const
+{
+    return clippedVoidFraction(mesh, solidVolume, voidFractionMin_);
 }
 
-VoidFractionResult VoidFractionModel::compute(const CellLocator& mesh,
-                                              const std::vector<Particle>& particles,
-                                              const std::vector<label>& centreHints) const {
-  const bool hinted = centreHints.size() == particles.size();
-  VoidFractionResult result;
-  result.solidVolume.assign(static_cast<std::size_t>(mesh.nCells()), 0.0);
-  result.centreCell.resize(particles.size());
-  std::vector<CellWeight> row;
-  for (std::size_t n = 0; n < particles.size(); ++n) {
-    const Particle& p = particles[n];
-    const label centre = mesh.findCell(p.x, hinted ? centreHints[n] : -1);
-    result.centreCell[n] = centre;
-    row.clear();
-    if (centre < 0) {
-      result.lostParticles.push_back(n);
-    } else {
-      distribute(mesh, p, centre, row);
+VoidFractionResult VoidFractionModel::compute(const CellLocator& mesh, const std::vector<Particle>& particles,
+                                              const std::vector<label>& centreHints) const
+{
+    const bool hinted = centreHints.size() == particles.size();
+    VoidFractionResult result;
+    result.solidVolume.assign(static_cast<std::size_t>(mesh.nCells()), 0.0);
+    result.centreCell.resize(particles.size());
+    std::vector<CellWeight> row;
+    for (std::size_t n = 0; n < particles.size(); ++n)
+    {
+        const Particle& p = particles[n];
+        const label centre = mesh.findCell(p.x, hinted ? centreHints[n] : -1);
+        result.centreCell[n] = centre;
+        row.clear();
+        if (centre < 0)
+        {
+            result.lostParticles.push_back(n);
+        }
+        else
+        {
+            distribute(mesh, p, centre, row);
+        }
+        const double volume = p.volume();
+        for (const CellWeight& cw : row) result.solidVolume[cw.cell] += cw.weight * volume;
+        result.map.appendRow(row);
     }
-    const double volume = p.volume();
-    for (const CellWeight& cw : row) result.solidVolume[cw.cell] += cw.weight * volume;
-    result.map.appendRow(row);
-  }
-  mesh.complete(result.solidVolume, 1);
-  return result;
+    mesh.complete(result.solidVolume, 1);
+    return result;
 }
 
 // Built on first use, before any model's registration object adds to it.
-ModelRegistry<VoidFractionModel>& VoidFractionModel::registry() {
-  static ModelRegistry<VoidFractionModel> models("voidFractionModel");
-  return models;
+ModelRegistry<VoidFractionModel>& VoidFractionModel::registry()
+{
+    static ModelRegistry<VoidFractionModel> models("voidFractionModel");
+    return models;
 }
 
-std::vector<std::string> VoidFractionModel::available() { return registry().names(); }
+std::vector<std::string> VoidFractionModel::available()
+{
+    return registry().names();
+}
 
 std::unique_ptr<VoidFractionModel> VoidFractionModel::New(const std::string& typeName,
-                                                          const Parameters& props) {
-  return registry().create(typeName, props);
+                                                          const Parameters& props)
+{
+    return registry().create(typeName, props);
 }
 
-}  // namespace spoutlab
+} // namespace spoutlab

@@ -18,83 +18,86 @@
 #include <string>
 #include <vector>
 
-namespace spoutlab {
+namespace spoutlab
+{
 
-struct CellWeight {
-  label cell;
-  double weight;  // fraction of the particle's volume in this cell
+struct CellWeight
+{
+    label cell;
+    double weight; // fraction of the particle's volume in this cell
 };
 
 // Compressed rows: for each particle, the cells it overlaps with weights that
 // sum to 1 (an empty row for a lost particle).
-class ParticleCellMap {
- public:
-  struct Row {
-    const CellWeight* first;
-    const CellWeight* last;
-    const CellWeight* begin() const { return first; }
-    const CellWeight* end() const { return last; }
-    std::size_t size() const { return static_cast<std::size_t>(last - first); }
-  };
+class ParticleCellMap
+{
+public:
+    struct Row
+    {
+        const CellWeight* first;
+        const CellWeight* last;
+        const CellWeight* begin() const { return first; }
+        const CellWeight* end() const { return last; }
+        std::size_t size() const { return static_cast<std::size_t>(last - first); }
+    };
 
-  std::size_t nParticles() const { return offsets_.size() - 1; }
-  Row cells(std::size_t particle) const;
+    std::size_t nParticles() const { return offsets_.size() - 1; }
+    Row cells(std::size_t particle) const;
 
-  void clear();
-  void appendRow(const std::vector<CellWeight>& row);
+    void clear();
+    void appendRow(const std::vector<CellWeight>& row);
 
- private:
-  std::vector<std::size_t> offsets_{0};
-  std::vector<CellWeight> entries_;
+private:
+    std::vector<std::size_t> offsets_{0};
+    std::vector<CellWeight> entries_;
 };
 
-struct VoidFractionResult {
-  ParticleCellMap map;
-  std::vector<double> solidVolume;         // per cell [m^3]
-  std::vector<label> centreCell;           // per particle, -1 if its centre is outside the mesh
-  std::vector<std::size_t> lostParticles;  // indices (into the particle vector) with centreCell -1
+struct VoidFractionResult
+{
+    ParticleCellMap map;
+    std::vector<double> solidVolume;        // per cell [m^3]
+    std::vector<label> centreCell;          // per particle, -1 if its centre is outside the mesh
+    std::vector<std::size_t> lostParticles; // indices (into the particle vector) with centreCell -1
 };
 
 // eps = 1 - solidVolume/V per cell, bounded below by voidFractionMin. The bound
 // only protects the drag law from eps -> 0 in overfilled cells (a particle
 // whose volume lands in a cell smaller than itself); solidVolume itself, and
 // with it the solid mass, is never clipped.
-std::vector<double> clippedVoidFraction(const CellLocator& mesh,
-                                        const std::vector<double>& solidVolume,
+std::vector<double> clippedVoidFraction(const CellLocator& mesh, const std::vector<double>& solidVolume,
                                         double voidFractionMin);
 
-class VoidFractionModel {
- public:
-  explicit VoidFractionModel(const Parameters& props);
-  virtual ~VoidFractionModel();
+class VoidFractionModel
+{
+public:
+    explicit VoidFractionModel(const Parameters& props);
+    virtual ~VoidFractionModel();
 
-  virtual std::string name() const = 0;
+    virtual std::string name() const = 0;
 
-  // centreHints: optional, per particle, a cell near its centre (e.g. last
-  // step's centreCell); particles move less than a cell per coupling step,
-  // so a hint saves the octree search.
-  VoidFractionResult compute(const CellLocator& mesh, const std::vector<Particle>& particles,
-                             const std::vector<label>& centreHints = {}) const;
+    // centreHints: optional, per particle, a cell near its centre (e.g. last
+    // step's centreCell); particles move less than a cell per coupling step,
+    // so a hint saves the octree search.
+    VoidFractionResult compute(const CellLocator& mesh, const std::vector<Particle>& particles,
+                               const std::vector<label>& centreHints = {}) const;
 
-  double voidFractionMin() const { return voidFractionMin_; }
-  std::vector<double> voidFraction(const CellLocator& mesh,
-                                   const std::vector<double>& solidVolume) const;
+    double voidFractionMin() const { return voidFractionMin_; }
+    std::vector<double> voidFraction(const CellLocator& mesh, const std::vector<double>& solidVolume) const;
 
-  // Run-time selection by name (the couplingProperties entry "voidFractionModel");
-  // a model joins the registry from its own .cpp (ModelRegistry.hpp).
-  static ModelRegistry<VoidFractionModel>& registry();
-  static std::unique_ptr<VoidFractionModel> New(const std::string& typeName,
-                                                const Parameters& props);
-  static std::vector<std::string> available();
+    // Run-time selection by name (the couplingProperties entry "voidFractionModel");
+    // a model joins the registry from its own .cpp (ModelRegistry.hpp).
+    static ModelRegistry<VoidFractionModel>& registry();
+    static std::unique_ptr<VoidFractionModel> New(const std::string& typeName, const Parameters& props);
+    static std::vector<std::string> available();
 
- protected:
-  // Fill row with this particle's (cell, weight) pairs, weights summing to 1.
-  // Called only for particles whose centre lies in centreCell (>= 0).
-  virtual void distribute(const CellLocator& mesh, const Particle& p, label centreCell,
-                          std::vector<CellWeight>& row) const = 0;
+protected:
+    // Fill row with this particle's (cell, weight) pairs, weights summing to 1.
+    // Called only for particles whose centre lies in centreCell (>= 0).
+    virtual void distribute(const CellLocator& mesh, const Particle& p, label centreCell,
+                            std::vector<CellWeight>& row) const = 0;
 
- private:
-  double voidFractionMin_;
+private:
+    double voidFractionMin_;
 };
 
-}  // namespace spoutlab
+} // namespace spoutlab
