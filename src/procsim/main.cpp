@@ -23,7 +23,7 @@ namespace
 struct Model
 {
     const char* name;
-    const char* summary;   // one line of procsim --help
+    const char* summary; // one line of procsim --help
     int (*main)(int, char**);
 };
 
@@ -51,7 +51,8 @@ int main(int argc, char** argv)
     std::vector<procsim::Subcommand> table;
     for (const auto& m : models)
     {
-        usage += "  " + std::string(m.name) + std::string(12 - std::string(m.name).size(), ' ') + m.summary + '\n';
+        usage +=
+            "  " + std::string(m.name) + std::string(12 - std::string(m.name).size(), ' ') + m.summary + '\n';
         // each model runs guarded: one line for bad input, outputs only on success
         table.push_back({m.name, [&m](int c, char** v) { return procsim::runGuarded(m.main, c, v); }});
     }

@@ -23,9 +23,12 @@ std::string trimmed(const std::string& text)
 namespace
 {
 
-std::string approx(double v) { return formatNumber(v, 3); }
+std::string approx(double v)
+{
+    return formatNumber(v, 3);
+}
 
-constexpr double maxBytes = 8e9;   // refuse runs that would need more memory than this
+constexpr double maxBytes = 8e9; // refuse runs that would need more memory than this
 
 } // namespace
 
@@ -37,7 +40,7 @@ std::optional<double> parseFinite(const std::string& text)
     char* end = nullptr;
     const double v = std::strtod(t.c_str(), &end);
     if (end != t.c_str() + t.size() || !std::isfinite(v)) return std::nullopt;
-    if (errno == ERANGE && std::fabs(v) > 1) return std::nullopt;   // overflow (underflow is fine)
+    if (errno == ERANGE && std::fabs(v) > 1) return std::nullopt; // overflow (underflow is fine)
     return v;
 }
 
@@ -52,8 +55,8 @@ std::optional<long> parseInteger(const std::string& text, long min, long max)
     return v;
 }
 
-long stepCount(double span, double step, long limit, const std::string& where,
-               const std::string& what, const std::string& hint)
+long stepCount(double span, double step, long limit, const std::string& where, const std::string& what,
+               const std::string& hint)
 {
     const double n = std::ceil(span / step - 1e-9);
     if (!(n <= static_cast<double>(limit)))
@@ -83,8 +86,10 @@ void checkFileNamePart(const std::string& name, const std::string& where)
     }
     if (!ok)
     {
-        throw InputError(where + " expected a name usable in a file name (no '/', '\\' or control"
-                                 " characters), got '" + name + "'");
+        throw InputError(where
+                         + " expected a name usable in a file name (no '/', '\\' or control"
+                           " characters), got '"
+                         + name + "'");
     }
 }
 

@@ -24,13 +24,12 @@ std::optional<long> parseInteger(const std::string& text, long min, long max);
 // Steps of length `step` covering `span` (at least 1), computed in double so
 // a tiny step cannot overflow.  A count above `limit` is refused with an
 // InputError "<where>: <what> needs about N steps (limit L); <hint>".
-long stepCount(double span, double step, long limit, const std::string& where,
-               const std::string& what, const std::string& hint);
+long stepCount(double span, double step, long limit, const std::string& where, const std::string& what,
+               const std::string& hint);
 
 // Refuses (InputError) a size whose memory estimate `cells * bytesPerCell`
 // exceeds the cap, giving the estimate.
-void checkMemory(double cells, double bytesPerCell, const std::string& where,
-                 const std::string& what);
+void checkMemory(double cells, double bytesPerCell, const std::string& where, const std::string& what);
 
 // A name that becomes part of an output file name: non-empty, no '/', '\\',
 // control characters, and not "." or "..".  `where` starts the message.

@@ -47,14 +47,16 @@ int runGuarded(int (*run)(int, char**), int argc, char** argv)
     }
     catch (const std::bad_alloc&)
     {
-        message = command + ": out of memory: the run is too large for this machine (reduce its size or"
-                            " duration); no output was written";
+        message = command
+                  + ": out of memory: the run is too large for this machine (reduce its size or"
+                    " duration); no output was written";
     }
     catch (const std::filesystem::filesystem_error& e)
     {
         const std::string p = e.path1().string();
-        message = command + ": cannot " + (p.empty() ? "use the output directory" : "create or use '" + p + "'")
-                  + ": " + e.code().message();
+        message = command + ": cannot "
+                  + (p.empty() ? "use the output directory" : "create or use '" + p + "'") + ": "
+                  + e.code().message();
     }
     catch (const std::exception& e)
     {

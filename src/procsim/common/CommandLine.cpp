@@ -13,8 +13,8 @@ namespace procsim
 CommandLine::CommandLine(std::string command, std::string help)
     : command_(std::move(command)), help_(std::move(help)), app_(std::make_unique<CLI::App>())
 {
-    app_->set_help_flag();   // procsim's help texts are its own (help/*.txt)
-    app_->allow_extras();    // unknown words are reported below, one line each
+    app_->set_help_flag(); // procsim's help texts are its own (help/*.txt)
+    app_->allow_extras();  // unknown words are reported below, one line each
     app_->add_option("input", inputs_);
 }
 
@@ -29,7 +29,7 @@ void CommandLine::input(std::string& path, const std::string& what)
 void CommandLine::valued(const std::string& names, std::string& value)
 {
     CLI::Option* o = app_->add_option(names, value);
-    o->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);   // repeats refused after parsing
+    o->multi_option_policy(CLI::MultiOptionPolicy::TakeLast); // repeats refused after parsing
     once_.push_back(o);
 }
 
@@ -65,9 +65,9 @@ void CommandLine::integer(const std::string& names, std::optional<long>& value, 
     auto& text = *texts_.emplace_back(std::make_unique<std::string>());
     valued(names, text);
     CLI::Option* o = once_.back();
-    const std::string expected = min == 1 && max == 2147483647L
-                                     ? "a positive integer"
-                                     : "an integer from " + std::to_string(min) + " to " + std::to_string(max);
+    const std::string expected = min == 1 && max == 2147483647L ? "a positive integer"
+                                                                : "an integer from " + std::to_string(min)
+                                                                      + " to " + std::to_string(max);
     convert_.push_back([this, o, &text, &value, min, max, expected] {
         if (o->count() == 0) return;
         value = parseInteger(text, min, max);
@@ -120,7 +120,8 @@ bool CommandLine::parse(int argc, char** argv)
     if (input_)
     {
         if (inputs_.empty())
-            throw InputError(command_ + ": expected one " + inputWhat_ + " (see procsim " + command_ + " --help)");
+            throw InputError(command_ + ": expected one " + inputWhat_ + " (see procsim " + command_
+                             + " --help)");
         *input_ = inputs_.front();
     }
     return true;
@@ -132,14 +133,16 @@ void CommandLine::rejectExtras() const
     for (const auto& word : app_->remaining())
     {
         if (!word.empty() && word[0] == '-')
-            throw InputError(command_ + ": unknown option '" + word + "' (see procsim " + command_ + " --help)");
+            throw InputError(command_ + ": unknown option '" + word + "' (see procsim " + command_
+                             + " --help)");
     }
     const std::size_t allowed = input_ ? 1 : 0;
     if (inputs_.size() > allowed || !app_->remaining().empty())
     {
         const std::string extra = inputs_.size() > allowed ? inputs_[allowed] : app_->remaining().front();
-        throw InputError(command_ + (input_ ? ": more than one " + inputWhat_ + " given ('"
-                                            : ": unexpected argument ('") + extra + "')");
+        throw InputError(
+            command_ + (input_ ? ": more than one " + inputWhat_ + " given ('" : ": unexpected argument ('")
+            + extra + "')");
     }
 }
 

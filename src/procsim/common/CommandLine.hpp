@@ -41,9 +41,9 @@ public:
     void text(const std::string& names, std::optional<std::string>& value);
     void number(const std::string& names, std::optional<double>& value);
     void integer(const std::string& names, std::optional<long>& value, long min = 1,
-                 long max = 2147483647L);   // a whole number within [min, max]
+                 long max = 2147483647L); // a whole number within [min, max]
     void flag(const std::string& names, bool& value);
-    void list(const std::string& names, std::vector<std::string>& values);   // may be repeated
+    void list(const std::string& names, std::vector<std::string>& values); // may be repeated
 
     // Reads argv (argv[0] is the subcommand).  Returns false when --help was
     // asked for: the help text is printed and the command is done.  Bad
@@ -52,8 +52,7 @@ public:
 
     // "<command>: option <name> expected <expected>, got '<given>'", for the
     // checks a command makes on an option's value.
-    InputError refuse(const std::string& option, const std::string& expected,
-                      const std::string& given) const;
+    InputError refuse(const std::string& option, const std::string& expected, const std::string& given) const;
     const std::string& command() const { return command_; }
 
 private:
@@ -65,12 +64,12 @@ private:
     std::string command_;
     std::string help_;
     std::unique_ptr<CLI::App> app_;
-    std::vector<CLI::Option*> once_;   // options that may appear only once
+    std::vector<CLI::Option*> once_; // options that may appear only once
     std::vector<std::string> inputs_;
     std::string* input_ = nullptr;
     std::string inputWhat_;
     std::vector<std::function<void()>> convert_;
-    std::vector<std::unique_ptr<std::string>> texts_;   // storage of the typed options' text
+    std::vector<std::unique_ptr<std::string>> texts_; // storage of the typed options' text
 };
 
 } // namespace procsim

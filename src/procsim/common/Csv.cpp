@@ -20,12 +20,12 @@ namespace
 
 struct Batch
 {
-    std::vector<std::pair<std::string, std::string>> staged;   // tmp, final
+    std::vector<std::pair<std::string, std::string>> staged; // tmp, final
     std::vector<std::function<void()>> deferred;
 };
 
 std::mutex batchMutex;
-std::unique_ptr<Batch> current;   // the open batch (one at a time: main's)
+std::unique_ptr<Batch> current; // the open batch (one at a time: main's)
 
 void putInPlace(const std::string& tmp, const std::string& path)
 {
@@ -106,7 +106,8 @@ void OutputBatch::stage(const std::string& tmp, const std::string& path)
     {
         for (const auto& staged : current->staged)
         {
-            if (staged.second == path) throw InputError(path + ": would be written twice by one run (two equal names?)");
+            if (staged.second == path)
+                throw InputError(path + ": would be written twice by one run (two equal names?)");
         }
         current->staged.emplace_back(tmp, path);
         return;
@@ -137,7 +138,7 @@ OutputFile::~OutputFile()
     if (!closed_)
     {
         out_.close();
-        std::remove((path_ + ".tmp").c_str());   // unfinished: leave the old file
+        std::remove((path_ + ".tmp").c_str()); // unfinished: leave the old file
     }
 }
 
@@ -173,7 +174,8 @@ void CsvWriter::row(const std::vector<double>& values)
     {
         if (std::isinf(values[i]))
         {
-            throw InputError(file_.path() + ": column '" + (i < header_.size() ? header_[i] : std::to_string(i + 1))
+            throw InputError(file_.path() + ": column '"
+                             + (i < header_.size() ? header_[i] : std::to_string(i + 1))
                              + "' would hold an infinite result (an input far out of range?)");
         }
     }
@@ -210,7 +212,8 @@ std::size_t CsvTable::column(const std::string& name, const std::string& file) c
 CsvTable readCsv(const std::string& path, bool allowMissing)
 {
     std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) throw InputError(path + ": is a directory, expected a CSV file");
+    if (std::filesystem::is_directory(path, ec))
+        throw InputError(path + ": is a directory, expected a CSV file");
     std::ifstream in(path);
     if (!in) throw InputError(path + ": cannot be read (missing file?)");
     CsvTable table;

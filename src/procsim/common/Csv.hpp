@@ -27,10 +27,10 @@ class OutputBatch
 {
 public:
     OutputBatch();
-    ~OutputBatch();             // without commit(): remove every staged temporary
+    ~OutputBatch(); // without commit(): remove every staged temporary
     OutputBatch(const OutputBatch&) = delete;
     OutputBatch& operator=(const OutputBatch&) = delete;
-    void commit();              // rename every staged file into place, then run deferred work
+    void commit(); // rename every staged file into place, then run deferred work
 
     // Is a batch open?  Staged renames and deferred work go to it.
     static bool open();
@@ -42,14 +42,14 @@ public:
 class OutputFile
 {
 public:
-    explicit OutputFile(const std::string& path);   // throws InputError if it cannot be created
-    ~OutputFile();                                   // not closed: remove the temporary
+    explicit OutputFile(const std::string& path); // throws InputError if it cannot be created
+    ~OutputFile();                                // not closed: remove the temporary
     OutputFile(const OutputFile&) = delete;
     OutputFile& operator=(const OutputFile&) = delete;
 
     std::ostream& out() { return out_; }
     const std::string& path() const { return path_; }
-    void close();   // finish: put in place now, or when the batch commits
+    void close(); // finish: put in place now, or when the batch commits
 
 private:
     std::string path_;
@@ -85,7 +85,7 @@ struct CsvTable
 {
     std::vector<std::string> header;
     std::vector<std::vector<double>> rows;
-    std::size_t column(const std::string& name, const std::string& file) const;  // throws InputError
+    std::size_t column(const std::string& name, const std::string& file) const; // throws InputError
 };
 CsvTable readCsv(const std::string& path, bool allowMissing = false);
 

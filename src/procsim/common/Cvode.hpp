@@ -18,7 +18,7 @@ struct CvodeSession
 {
     SUNContext ctx = nullptr;
     N_Vector y = nullptr;
-    N_Vector atol = nullptr;        // per-component absolute tolerances, if used
+    N_Vector atol = nullptr; // per-component absolute tolerances, if used
     SUNMatrix A = nullptr;
     SUNLinearSolver LS = nullptr;
     void* mem = nullptr;
@@ -42,8 +42,8 @@ inline void checkCvode(int flag, const char* what)
 {
     if (flag < 0)
     {
-        throw std::runtime_error(std::string("CVODE failed in ") + what + " (flag "
-                                 + std::to_string(flag) + ")");
+        throw std::runtime_error(std::string("CVODE failed in ") + what + " (flag " + std::to_string(flag)
+                                 + ")");
     }
 }
 

@@ -28,7 +28,7 @@ private:
 // commits (the data it plots is in place then) and returns true.  Returns
 // false (and prints a warning) if gnuplot is missing or fails; plots are a
 // convenience, the CSV is the result.
-bool plotPng(const std::string& png, std::string_view script, const PlotVariables& variables,
-             int width = 900, int height = 600);
+bool plotPng(const std::string& png, std::string_view script, const PlotVariables& variables, int width = 900,
+             int height = 600);
 
 } // namespace procsim

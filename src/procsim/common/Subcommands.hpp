@@ -13,7 +13,7 @@ namespace procsim
 struct Subcommand
 {
     std::string name;
-    std::function<int(int, char**)> run;   // gets argv from the subcommand's name on
+    std::function<int(int, char**)> run; // gets argv from the subcommand's name on
 };
 
 // argv[0] is the command (e.g. "dryer"), argv[1] the subcommand.  Without
@@ -22,8 +22,7 @@ struct Subcommand
 // "<command>: unknown command 'x' (see procsim <command> --help)".
 // `command` is empty for procsim itself; `noun` names the choices in that
 // message ("model" for plume).
-int runSubcommand(const std::string& command, std::string_view usage,
-                  const std::vector<Subcommand>& table, int argc, char** argv,
-                  const std::string& noun = "command");
+int runSubcommand(const std::string& command, std::string_view usage, const std::vector<Subcommand>& table,
+                  int argc, char** argv, const std::string& noun = "command");
 
 } // namespace procsim

@@ -88,8 +88,7 @@ YamlInput YamlInput::load(const std::string& path)
 
 YamlInput::YamlInput(YAML::Node node, std::string file, std::string path)
     : node_(std::move(node)), file_(std::move(file)), path_(std::move(path))
-{
-}
+{}
 
 std::string YamlInput::keyPath(const std::string& key) const
 {
@@ -105,8 +104,7 @@ InputError YamlInput::error(const std::string& key, const std::string& expected)
     }
     else if (node_.IsMap() && !node_[key])
     {
-        return InputError(file_ + ": key '" + keyPath(key) + "' is missing (expected "
-                          + expected + ")");
+        return InputError(file_ + ": key '" + keyPath(key) + "' is missing (expected " + expected + ")");
     }
     return InputError(file_ + ": key '" + keyPath(key) + "' expected " + expected + got);
 }
@@ -115,8 +113,7 @@ YAML::Node YamlInput::required(const std::string& key, const std::string& expect
 {
     if (!node_.IsMap() || !node_[key])
     {
-        throw InputError(file_ + ": key '" + keyPath(key) + "' is missing (expected "
-                         + expected + ")");
+        throw InputError(file_ + ": key '" + keyPath(key) + "' is missing (expected " + expected + ")");
     }
     return node_[key];
 }
@@ -251,8 +248,7 @@ void YamlInput::rejectUnknown(const std::vector<std::string>& known) const
         {
             std::string list;
             for (const auto& kk : known) list += (list.empty() ? "" : ", ") + kk;
-            throw InputError(file_ + ": unknown key '" + keyPath(k) + "' (expected one of: "
-                             + list + ")");
+            throw InputError(file_ + ": unknown key '" + keyPath(k) + "' (expected one of: " + list + ")");
         }
     }
 }

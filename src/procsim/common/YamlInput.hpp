@@ -24,13 +24,13 @@ public:
     YamlInput(YAML::Node node, std::string file, std::string path);
 
     const std::string& file() const { return file_; }
-    const std::string& path() const { return path_; }   // e.g. "reactor.volume"
+    const std::string& path() const { return path_; } // e.g. "reactor.volume"
     const YAML::Node& node() const { return node_; }
 
     bool has(const std::string& key) const;
-    YamlInput child(const std::string& key) const;     // required map/sequence
-    std::vector<YamlInput> items() const;               // elements of a sequence
-    std::vector<std::string> keys() const;               // keys of a map
+    YamlInput child(const std::string& key) const; // required map/sequence
+    std::vector<YamlInput> items() const;          // elements of a sequence
+    std::vector<std::string> keys() const;         // keys of a map
 
     double number(const std::string& key, const std::string& unit = "") const;
     double number(const std::string& key, double fallback, const std::string& unit = "") const;
@@ -40,7 +40,7 @@ public:
     double within(const std::string& key, double lo, double hi, const std::string& unit = "") const;
     double within(const std::string& key, double fallback, double lo, double hi,
                   const std::string& unit = "") const;
-    long integer(const std::string& key) const;            // within the range of int
+    long integer(const std::string& key) const; // within the range of int
     long integer(const std::string& key, long min, long max) const;
     std::string text(const std::string& key) const;
     std::string text(const std::string& key, const std::string& fallback) const;

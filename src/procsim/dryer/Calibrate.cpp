@@ -36,7 +36,7 @@ struct BatchCost
         }
         catch (const std::exception&)
         {
-            return false;   // Ceres shortens the step
+            return false; // Ceres shortens the step
         }
         residuals[0] = r.dryingTime / *b.measuredTime - 1.0;
         residuals[1] = r.electricityJ / *b.measuredElectricity - 1.0;
@@ -69,7 +69,7 @@ CalibrationResult calibrate(Plant& plant, int maxIterations, double functionTole
     out.start = x;
 
     ceres::NumericDiffOptions nd;
-    nd.relative_step_size = 1e-3;   // well above the ODE tolerance noise
+    nd.relative_step_size = 1e-3; // well above the ODE tolerance noise
     ceres::Problem problem;
     std::vector<double*> blocks;
     for (double& v : x) blocks.push_back(&v);
@@ -113,9 +113,8 @@ BatchCheck checkBatch(const Plant& plant, const std::string& id, const std::stri
     out.id = id;
     out.result = simulate(plant.caseFor(b, venting));
     out.timeError = b.measuredTime ? out.result.dryingTime / *b.measuredTime - 1.0 : std::nan("");
-    out.electricityError = b.measuredElectricity
-                               ? out.result.electricityJ / *b.measuredElectricity - 1.0
-                               : std::nan("");
+    out.electricityError =
+        b.measuredElectricity ? out.result.electricityJ / *b.measuredElectricity - 1.0 : std::nan("");
     return out;
 }
 
@@ -168,7 +167,7 @@ ProfilePoint profilePoint(const Plant& central, const std::vector<double>& value
     }
     catch (const std::exception&)
     {
-        pt.failed = true;   // e.g. a held value outside what the model integrates
+        pt.failed = true; // e.g. a held value outside what the model integrates
         return pt;
     }
     pt.accepted = true;

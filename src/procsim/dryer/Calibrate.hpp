@@ -13,10 +13,10 @@ namespace procsim::dryer
 
 struct CalibrationResult
 {
-    std::vector<double> start, fitted;   // in Plant::fit order
+    std::vector<double> start, fitted; // in Plant::fit order
     double initialCost = 0, finalCost = 0;
     int iterations = 0;
-    std::string report;                  // Ceres brief report
+    std::string report; // Ceres brief report
 };
 
 // Fits plant.fit on plant.calibrateOn; on return `plant` holds the fitted
@@ -30,7 +30,7 @@ struct BatchCheck
 {
     std::string id;
     BatchResult result;
-    double timeError = 0, electricityError = 0;   // model / measured - 1 (NaN if unmeasured)
+    double timeError = 0, electricityError = 0; // model / measured - 1 (NaN if unmeasured)
 };
 
 // Runs a batch with the given venting and compares it with its measurement.
@@ -40,15 +40,15 @@ BatchCheck checkBatch(const Plant& plant, const std::string& id, const std::stri
 // it reproduces the calibration batches and what it predicts.
 struct ProfilePoint
 {
-    std::vector<double> held;               // in Plant::profile order
-    std::vector<std::string> refitNames;    // the parameters refitted here
-    std::vector<double> refitted;           // their values
-    double cost = 0;                        // Ceres cost of the refit
-    std::vector<BatchCheck> fitted;         // plant.calibrateOn, own venting
-    std::vector<BatchCheck> predicted;      // plant.predict, plant.predictVenting
-    bool failed = false;                    // a run did not integrate
-    bool accepted = false;                  // every fitted error within the tolerances
-    double worstTimeError = 0, worstElectricityError = 0;   // largest |error| over fitted
+    std::vector<double> held;                             // in Plant::profile order
+    std::vector<std::string> refitNames;                  // the parameters refitted here
+    std::vector<double> refitted;                         // their values
+    double cost = 0;                                      // Ceres cost of the refit
+    std::vector<BatchCheck> fitted;                       // plant.calibrateOn, own venting
+    std::vector<BatchCheck> predicted;                    // plant.predict, plant.predictVenting
+    bool failed = false;                                  // a run did not integrate
+    bool accepted = false;                                // every fitted error within the tolerances
+    double worstTimeError = 0, worstElectricityError = 0; // largest |error| over fitted
 };
 
 // Holds Plant::profile on every grid point (last axis fastest), refits the

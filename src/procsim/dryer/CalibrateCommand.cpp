@@ -28,8 +28,8 @@ struct CalibrateArgs
 {
     std::string plant;
     std::string out = ".";
-    int maxIterations = 50;   // Levenberg-Marquardt iterations per fit
-    bool profile = true;      // when the plant file has one
+    int maxIterations = 50; // Levenberg-Marquardt iterations per fit
+    bool profile = true;    // when the plant file has one
 };
 
 std::optional<CalibrateArgs> parse(int argc, char** argv)
@@ -37,7 +37,8 @@ std::optional<CalibrateArgs> parse(int argc, char** argv)
     CalibrateArgs a;
     std::optional<long> iterations;
     std::string profile = "on";
-    CommandLine cl("dryer calibrate", std::string(texts::help::calibrate) + "\n" + std::string(texts::help::plant));
+    CommandLine cl("dryer calibrate",
+                   std::string(texts::help::calibrate) + "\n" + std::string(texts::help::plant));
     cl.input(a.plant, "plant file");
     cl.text("--out", a.out);
     cl.integer("--max-iterations", iterations, 1, 1000);
@@ -84,7 +85,8 @@ void printFit(const Plant& plant, const CalibrationResult& cr)
     for (const auto& id : plant.calibrateOn) fmt::print(" {}", id);
     fmt::print(": {}\n", cr.report);
     for (std::size_t i = 0; i < plant.fit.size(); ++i)
-        fmt::print("  {:<46} start {:>10.4f}  fitted {:>10.4f}\n", plant.fit[i].name, cr.start[i], cr.fitted[i]);
+        fmt::print("  {:<46} start {:>10.4f}  fitted {:>10.4f}\n", plant.fit[i].name, cr.start[i],
+                   cr.fitted[i]);
 }
 
 std::vector<std::string> profileHeader(const Plant& plant, const std::vector<std::string>& refit)
@@ -92,7 +94,8 @@ std::vector<std::string> profileHeader(const Plant& plant, const std::vector<std
     std::vector<std::string> head;
     for (const auto& a : plant.profile) head.push_back("held:" + a.name);
     for (const auto& n : refit) head.push_back("refitted:" + n);
-    for (const auto& n : {"cost", "worst_time_error_percent", "worst_electricity_error_percent", "accepted", "failed"})
+    for (const auto& n :
+         {"cost", "worst_time_error_percent", "worst_electricity_error_percent", "accepted", "failed"})
         head.push_back(n);
     for (const auto& id : plant.calibrateOn)
         for (const auto& n : {"time_error_percent_", "electricity_error_percent_"}) head.push_back(n + id);
@@ -107,8 +110,8 @@ std::vector<double> profileRow(const Plant& plant, const ProfilePoint& pt, std::
     const double nan = std::nan("");
     std::vector<double> row(pt.held);
     for (std::size_t i = 0; i < refitCount; ++i) row.push_back(pt.failed ? nan : pt.refitted[i]);
-    row.insert(row.end(), {pt.cost, pt.worstTimeError * 100, pt.worstElectricityError * 100, pt.accepted ? 1.0 : 0.0,
-                           pt.failed ? 1.0 : 0.0});
+    row.insert(row.end(), {pt.cost, pt.worstTimeError * 100, pt.worstElectricityError * 100,
+                           pt.accepted ? 1.0 : 0.0, pt.failed ? 1.0 : 0.0});
     for (std::size_t i = 0; i < plant.calibrateOn.size(); ++i)
     {
         row.push_back(pt.failed ? nan : pt.fitted[i].timeError * 100);
@@ -133,7 +136,8 @@ void writeProfileCsv(const std::string& path, const Plant& plant, const std::vec
 
 void printProfilePoint(const Plant& plant, const ProfilePoint& pt)
 {
-    for (std::size_t a = 0; a < pt.held.size(); ++a) fmt::print("  {} = {:.4f}", plant.profile[a].name, pt.held[a]);
+    for (std::size_t a = 0; a < pt.held.size(); ++a)
+        fmt::print("  {} = {:.4f}", plant.profile[a].name, pt.held[a]);
     if (pt.failed)
     {
         fmt::print("  -> a run did not integrate\n");
@@ -145,14 +149,15 @@ void printProfilePoint(const Plant& plant, const ProfilePoint& pt)
         fmt::print("  | {}: {}{} h {:.0f} kWh", c.id, formatHoursMinutes(c.result.dryingTime),
                    c.result.reachedTarget ? "" : "+", c.result.electricityJ / 3.6e6);
     fmt::print("\n");
-    std::fflush(stdout);   // a profile takes minutes: show each point as it ends
+    std::fflush(stdout); // a profile takes minutes: show each point as it ends
 }
 
 // One batch of the calibrate-then-predict table: per quantity measured,
 // central fit and the band over the profile fits; printed and returned as
 // its calibration.csv row.
 std::vector<std::string> calibrationRow(const Plant& plant, const std::vector<ProfilePoint>& points,
-                                        const std::string& id, const std::string& role, const std::string& vent)
+                                        const std::string& id, const std::string& role,
+                                        const std::string& vent)
 {
     const BatchSpec& b = plant.batch(id);
     const BatchResult r = simulate(plant.caseFor(b, vent));
@@ -164,13 +169,16 @@ std::vector<std::string> calibrationRow(const Plant& plant, const std::vector<Pr
         const Band bd = band(points, id, q.model);
         members = bd.members;
         const std::string in = bd.members == 0 || std::isnan(m) ? "-" : bd.contains(m) ? "yes" : "no";
-        row.insert(row.end(), {formatFixed(m, 4), formatFixed(c, 4), bd.members ? formatFixed(bd.lo, 4) : "nan",
-                               bd.members ? formatFixed(bd.hi, 4) : "nan",
-                               in == "yes" ? "1" : in == "no" ? "0" : "nan"});
+        row.insert(row.end(),
+                   {formatFixed(m, 4), formatFixed(c, 4), bd.members ? formatFixed(bd.lo, 4) : "nan",
+                    bd.members ? formatFixed(bd.hi, 4) : "nan",
+                    in == "yes"  ? "1"
+                    : in == "no" ? "0"
+                                 : "nan"});
         const std::string central = q.show(c) + (r.reachedTarget || q.name != "time" ? "" : "+");
         const std::string range = bd.members ? q.show(bd.lo) + " .. " + q.show(bd.hi) : "-";
-        fmt::print("{:<7}{:<11}{:<13}{:>10}{:>10}{:>22}  {}\n", id, role, q.name + " " + q.unit, q.show(m), central,
-                   range, in);
+        fmt::print("{:<7}{:<11}{:<13}{:>10}{:>10}{:>22}  {}\n", id, role, q.name + " " + q.unit, q.show(m),
+                   central, range, in);
     }
     row.push_back(std::to_string(members));
     return row;
@@ -189,18 +197,21 @@ void reportCalibration(const std::string& path, const Plant& plant, const std::v
     }
     head.push_back("band_members");
     CsvWriter csv(path, head);
-    fmt::print("\n{:<7}{:<11}{:<13}{:>10}{:>10}{:>22}  measured in band\n", "batch", "role", "quantity", "measured",
-               "central", "band (profile fits)");
-    for (const auto& id : plant.calibrateOn) csv.row(calibrationRow(plant, points, id, "fitted", plant.batch(id).venting));
-    for (const auto& id : plant.predict) csv.row(calibrationRow(plant, points, id, "predicted", plant.predictVenting));
+    fmt::print("\n{:<7}{:<11}{:<13}{:>10}{:>10}{:>22}  measured in band\n", "batch", "role", "quantity",
+               "measured", "central", "band (profile fits)");
+    for (const auto& id : plant.calibrateOn)
+        csv.row(calibrationRow(plant, points, id, "fitted", plant.batch(id).venting));
+    for (const auto& id : plant.predict)
+        csv.row(calibrationRow(plant, points, id, "predicted", plant.predictVenting));
     csv.close();
 }
 
 std::vector<ProfilePoint> runProfile(const Plant& plant, const CalibrateArgs& a)
 {
-    fmt::print("\nprofile: hold, refit the rest on the calibration batches (fits: every time error within {:.1f} %, "
-               "electricity within {:.1f} %)\n",
-               plant.timeTolerance * 100, plant.electricityTolerance * 100);
+    fmt::print(
+        "\nprofile: hold, refit the rest on the calibration batches (fits: every time error within {:.1f} %, "
+        "electricity within {:.1f} %)\n",
+        plant.timeTolerance * 100, plant.electricityTolerance * 100);
     const auto points =
         profile(plant, a.maxIterations, [&](const ProfilePoint& pt) { printProfilePoint(plant, pt); });
     writeProfileCsv(a.out + "/profile.csv", plant, points);
@@ -214,16 +225,18 @@ int calibrateCommand(int argc, char** argv)
     const auto args = parse(argc, argv);
     if (!args) return 0;
     Plant plant = readPlant(args->plant);
-    if (plant.fit.empty()) throw InputError(plant.file + ": key 'calibration' is missing (needed by calibrate)");
+    if (plant.fit.empty())
+        throw InputError(plant.file + ": key 'calibration' is missing (needed by calibrate)");
     const std::string& dir = args->out;
     createOutputDirectory(dir);
     printFit(plant, calibrate(plant, args->maxIterations));
-    writePlant(plant, dir + "/calibrated.yaml", "plant file with parameters fitted by 'procsim dryer calibrate'");
+    writePlant(plant, dir + "/calibrated.yaml",
+               "plant file with parameters fitted by 'procsim dryer calibrate'");
     std::vector<ProfilePoint> points;
     if (args->profile && !plant.profile.empty()) points = runProfile(plant, *args);
     reportCalibration(dir + "/calibration.csv", plant, points);
-    plotPng(dir + "/calibration.png", texts::plots::calibration, PlotVariables().set("csv", dir + "/calibration.csv"),
-            1200, 900);
+    plotPng(dir + "/calibration.png", texts::plots::calibration,
+            PlotVariables().set("csv", dir + "/calibration.csv"), 1200, 900);
     fmt::print("\nwrote {}/calibration.csv, calibration.png, calibrated.yaml{}\n", dir,
                points.empty() ? "" : ", profile.csv");
     return 0;

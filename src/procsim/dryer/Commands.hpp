@@ -6,10 +6,10 @@
 namespace procsim::dryer
 {
 
-int metricsCommand(int argc, char** argv);     // MetricsCommand.cpp
-int psychroCommand(int argc, char** argv);     // PsychroCommand.cpp
-int simulateCommand(int argc, char** argv);    // SimulateCommand.cpp
-int calibrateCommand(int argc, char** argv);   // CalibrateCommand.cpp
-int whatifCommand(int argc, char** argv);      // WhatifCommand.cpp
+int metricsCommand(int argc, char** argv);   // MetricsCommand.cpp
+int psychroCommand(int argc, char** argv);   // PsychroCommand.cpp
+int simulateCommand(int argc, char** argv);  // SimulateCommand.cpp
+int calibrateCommand(int argc, char** argv); // CalibrateCommand.cpp
+int whatifCommand(int argc, char** argv);    // WhatifCommand.cpp
 
 } // namespace procsim::dryer

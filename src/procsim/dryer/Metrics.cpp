@@ -109,14 +109,12 @@ void validate(const BatchRecord& b, const std::string& where)
     if (!(b.x2 < b.x1))
     {
         std::ostringstream os;
-        os << "a final moisture below the initial " << b.x1 * 100 << " % (dry basis), got "
-           << b.x2 * 100;
+        os << "a final moisture below the initial " << b.x1 * 100 << " % (dry basis), got " << b.x2 * 100;
         fail("final_moisture_percent_db", os.str());
     }
     if (!(b.timeS > 0)) fail("drying_time", "a positive drying time");
     if (!(b.electricityJ > 0)) fail("electricity_kWh", "a positive energy [kWh]");
-    if (b.rateKgPerS && !(*b.rateKgPerS > 0))
-        fail("evaporation_rate_kg_per_h", "a positive rate [kg/h]");
+    if (b.rateKgPerS && !(*b.rateKgPerS > 0)) fail("evaporation_rate_kg_per_h", "a positive rate [kg/h]");
     if (b.dryMassKg && !(*b.dryMassKg > 0)) fail("dry_mass_kg", "a positive mass [kg]");
     if (b.waterKg && !(*b.waterKg > 0)) fail("evaporated_water_kg", "a positive mass [kg]");
     if (!b.rateKgPerS && !b.dryMassKg && !b.waterKg)
@@ -168,10 +166,9 @@ BatchFile readYaml(const std::string& path)
     const YamlInput list = in.child("batches");
     for (const YamlInput& b : list.items())
     {
-        b.rejectUnknown({"id", "dryer", "material", "hot_air_temperature_C",
-                         "ambient_temperature_C", "initial_moisture_percent_db",
-                         "final_moisture_percent_db", "drying_time", "drying_time_h",
-                         "electricity_kWh", "evaporation_rate_kg_per_h", "dry_mass_kg",
+        b.rejectUnknown({"id", "dryer", "material", "hot_air_temperature_C", "ambient_temperature_C",
+                         "initial_moisture_percent_db", "final_moisture_percent_db", "drying_time",
+                         "drying_time_h", "electricity_kWh", "evaporation_rate_kg_per_h", "dry_mass_kg",
                          "evaporated_water_kg", "paper_energy_efficiency_percent",
                          "paper_specific_energy_kJ_per_kg", "note"});
         BatchRecord r;
@@ -219,17 +216,17 @@ BatchFile readYaml(const std::string& path)
 
 BatchFile readCsvFile(const std::string& path)
 {
-    const CsvTable t = readCsv(path, true);   // "nan" = not given
+    const CsvTable t = readCsv(path, true); // "nan" = not given
     auto col = [&](const std::string& name) -> long {
         for (std::size_t i = 0; i < t.header.size(); ++i)
             if (t.header[i] == name) return static_cast<long>(i);
         return -1;
     };
-    for (const char* required : {"batch", "hot_air_temperature_C", "ambient_temperature_C",
-                                 "initial_moisture_percent_db", "final_moisture_percent_db",
-                                 "drying_time_h", "electricity_kWh"})
+    for (const char* required :
+         {"batch", "hot_air_temperature_C", "ambient_temperature_C", "initial_moisture_percent_db",
+          "final_moisture_percent_db", "drying_time_h", "electricity_kWh"})
     {
-        t.column(required, path);   // throws with the column name if missing
+        t.column(required, path); // throws with the column name if missing
     }
     BatchFile f;
     std::size_t line = 0;

@@ -23,39 +23,39 @@ struct LatentHeatConvention
         Constant,
     };
     Kind kind = Kind::AmbientLiquidToHotAirVapour;
-    double constant = 2501.0e3;   // J/kg, for Kind::Constant
+    double constant = 2501.0e3; // J/kg, for Kind::Constant
 
-    double perKg(double hotAirC, double ambientC) const;   // J/kg
+    double perKg(double hotAirC, double ambientC) const; // J/kg
     std::string describe() const;
 };
 
 struct BatchRecord
 {
     std::string id;
-    std::string dryer;       // free text, e.g. "old" / "modified"
+    std::string dryer; // free text, e.g. "old" / "modified"
     std::string material;
-    double hotAirC = 0;      // hot-air set-point, degC
-    double ambientC = 0;     // ambient temperature, degC
-    double x1 = 0;           // initial average moisture, kg/kg dry basis
-    double x2 = 0;           // final average moisture, kg/kg dry basis
-    double timeS = 0;        // drying time, s
-    double electricityJ = 0; // electricity for the batch, J
-    std::optional<double> rateKgPerS;    // average evaporation rate
+    double hotAirC = 0;               // hot-air set-point, degC
+    double ambientC = 0;              // ambient temperature, degC
+    double x1 = 0;                    // initial average moisture, kg/kg dry basis
+    double x2 = 0;                    // final average moisture, kg/kg dry basis
+    double timeS = 0;                 // drying time, s
+    double electricityJ = 0;          // electricity for the batch, J
+    std::optional<double> rateKgPerS; // average evaporation rate
     std::optional<double> dryMassKg;
-    std::optional<double> waterKg;       // evaporated water, if weighed directly
+    std::optional<double> waterKg; // evaporated water, if weighed directly
     // Published values to compare with (optional).
-    std::optional<double> paperEta;      // fraction
-    std::optional<double> paperE;        // J/kg
-    std::string source;      // file (for messages)
+    std::optional<double> paperEta; // fraction
+    std::optional<double> paperE;   // J/kg
+    std::string source;             // file (for messages)
 };
 
 struct BatchMetrics
 {
     std::string id;
-    double waterKg = 0;        // evaporated water
-    std::string waterFrom;     // "evaporated_water", "dry_mass", "rate x time"
+    double waterKg = 0;    // evaporated water
+    std::string waterFrom; // "evaporated_water", "dry_mass", "rate x time"
     double dryMassKg = 0;
-    double rateKgPerH = 0;     // water / drying time
+    double rateKgPerH = 0; // water / drying time
     double electricityKWh = 0;
     double latentJPerKg = 0;
     double eta = 0;            // fraction
@@ -63,7 +63,7 @@ struct BatchMetrics
     // Cross-check: water implied by a reported rate x time, when the water
     // came from another source (NaN if not applicable).
     double rateWaterKg = 0;
-    bool rateDisagrees = false;   // > 1 % apart
+    bool rateDisagrees = false; // > 1 % apart
 };
 
 BatchMetrics computeMetrics(const BatchRecord& b, const LatentHeatConvention& lh);

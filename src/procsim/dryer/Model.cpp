@@ -62,8 +62,7 @@ std::vector<double> DryerCase::initialTrayMoisture() const
     const double sd = std::sqrt(var / n);
     for (std::size_t i = 0; i < n; ++i) x[i] = x0 * (1.0 + x0Spread * z[i] / sd);
     for (double v : x)
-        if (v <= 0.0)
-            throw std::domain_error("initial moisture spread too large: a tray starts dry");
+        if (v <= 0.0) throw std::domain_error("initial moisture spread too large: a tray starts dry");
     return x;
 }
 
@@ -93,7 +92,7 @@ namespace
 {
 
 // State layout: [m_w(0..n-1), H_p(0..n-1), W_r, h_r, counters...]
-constexpr double kCondensationRate = 10.0;   // x circulation, kg/s per unit (W - W_s)
+constexpr double kCondensationRate = 10.0; // x circulation, kg/s per unit (W - W_s)
 
 enum Counter
 {
@@ -104,8 +103,8 @@ enum Counter
     kVentHIn,
     kVentWOut,
     kVentWIn,
-    kCondensateW,   // water condensed on walls from supersaturated return air
-    kCondensateH,   // its enthalpy (liquid at the return-air temperature)
+    kCondensateW, // water condensed on walls from supersaturated return air
+    kCondensateH, // its enthalpy (liquid at the return-air temperature)
     kCounters
 };
 
@@ -113,9 +112,9 @@ struct Loop
 {
     const DryerCase& c;
     std::size_t n;
-    std::vector<double> hA;        // W/K per tray
-    std::vector<double> mDry;      // kg per tray
-    double wAmb, hAmb, gv, gt;   // gt: air over the trays
+    std::vector<double> hA;    // W/K per tray
+    std::vector<double> mDry;  // kg per tray
+    double wAmb, hAmb, gv, gt; // gt: air over the trays
 
     explicit Loop(const DryerCase& cs) : c(cs), n(static_cast<std::size_t>(cs.trays()))
     {
@@ -147,9 +146,9 @@ struct Loop
 
     struct Supply
     {
-        double w, h, t, rh, xeq;   // air over the trays
-        double hShort;             // short-circuited make-up air leaving the vents
-        double heater;             // total heater power
+        double w, h, t, rh, xeq; // air over the trays
+        double hShort;           // short-circuited make-up air leaving the vents
+        double heater;           // total heater power
     };
 
     // Heaters bring the tray stream (recirculated + (1-s) make-up, plus fan
@@ -261,8 +260,8 @@ struct Loop
         double e = 0;
         for (std::size_t i = 0; i < n; ++i) e += y[n + i];
         const double* k = y + 2 * n + 2;
-        return e + c.airHoldup * y[2 * n + 1] + k[kVentHOut] - k[kVentHIn] + k[kWall]
-               + k[kCondensateH] - k[kHeater] - k[kFan];
+        return e + c.airHoldup * y[2 * n + 1] + k[kVentHOut] - k[kVentHIn] + k[kWall] + k[kCondensateH]
+               - k[kHeater] - k[kFan];
     }
 };
 
@@ -282,7 +281,6 @@ int cvRoot(sunrealtype, N_Vector y, sunrealtype* g, void* data)
 // CVODE's own messages would add lines to procsim's one-line errors; the
 // failure is reported by checkCvode() instead.
 void quietCvode(int, const char*, const char*, char*, void*) {}
-
 
 TimePoint sample(const Loop& L, double t, const double* y)
 {
@@ -354,7 +352,7 @@ BatchResult simulate(const DryerCase& c, double latentPerKg)
     const double productWater0 = L.xAverage(y) * c.dryMass;
 
     cv.mem = CVodeCreate(CV_BDF, cv.ctx);
-    CVodeSetErrFile(cv.mem, nullptr);   // failures are reported as one line by checkCvode
+    CVodeSetErrFile(cv.mem, nullptr); // failures are reported as one line by checkCvode
     checkCvode(CVodeInit(cv.mem, cvRhs, 0.0, cv.y), "init");
     checkCvode(CVodeSetErrHandlerFn(cv.mem, quietCvode, nullptr), "error handler");
     checkCvode(CVodeSetUserData(cv.mem, const_cast<Loop*>(&L)), "user data");
@@ -401,9 +399,8 @@ BatchResult simulate(const DryerCase& c, double latentPerKg)
     r.electricityJ = r.heaterJ + r.fanJ;
     r.waterEvaporated = productWater0 - L.xAverage(y) * c.dryMass;
     r.specificEnergy = r.electricityJ / r.waterEvaporated;
-    r.latentPerKg = latentPerKg > 0 ? latentPerKg
-                                    : psy::kHfg0 + psy::kCpVapour * c.hotAirC
-                                          - psy::kCpWater * c.ambientC;
+    r.latentPerKg =
+        latentPerKg > 0 ? latentPerKg : psy::kHfg0 + psy::kCpVapour * c.hotAirC - psy::kCpWater * c.ambientC;
     r.eta = r.waterEvaporated * r.latentPerKg / r.electricityJ;
     r.scorched = r.tProductMax > c.scorchC;
     r.trayX.resize(n);

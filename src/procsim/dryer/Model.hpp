@@ -36,67 +36,67 @@ struct DryerCase
     int carts = 9;
     int traysPerCart = 15;
     int piecesPerTray = 160;
-    double pieceDiameter = 0.0095;   // m
-    double pieceLength = 0.9;        // m (pieces laid across the 0.9 m tray)
+    double pieceDiameter = 0.0095; // m
+    double pieceLength = 0.9;      // m (pieces laid across the 0.9 m tray)
     // product
-    double dryMass = 1000;           // kg bone-dry, whole batch
-    double x0 = 0.5;                 // initial average moisture, dry basis
-    double xTarget = 0.12;           // batch average at which drying stops
-    double x0Spread = 0.0;           // relative std dev of initial tray moisture
-    unsigned seed = 1;               // for the initial-moisture pattern
-    double cpDry = 1500;             // J/(kg K) bone-dry product
-    double scorchC = 75;             // product temperature that scorches
+    double dryMass = 1000; // kg bone-dry, whole batch
+    double x0 = 0.5;       // initial average moisture, dry basis
+    double xTarget = 0.12; // batch average at which drying stops
+    double x0Spread = 0.0; // relative std dev of initial tray moisture
+    unsigned seed = 1;     // for the initial-moisture pattern
+    double cpDry = 1500;   // J/(kg K) bone-dry product
+    double scorchC = 75;   // product temperature that scorches
     // kinetics
     enum class Kinetics
     {
-        ThinLayer,             // internal (Lewis/Arrhenius) and gas-film resistances in series
-        CharacteristicCurve,   // gas-film rate x f(X) (constant + falling rate)
+        ThinLayer,           // internal (Lewis/Arrhenius) and gas-film resistances in series
+        CharacteristicCurve, // gas-film rate x f(X) (constant + falling rate)
     };
     Kinetics kinetics = Kinetics::ThinLayer;
-    double rateConstant = 0.2 / 3600;   // 1/s at the reference temperature (thin layer)
-    double referenceC = 70;             // degC
-    double activationEnergy = 20e3;     // J/mol
+    double rateConstant = 0.2 / 3600; // 1/s at the reference temperature (thin layer)
+    double referenceC = 70;           // degC
+    double activationEnergy = 20e3;   // J/mol
     double xCritical = 0.6;
-    double oswinA = 0.1;             // Oswin isotherm, kg/kg dry basis
+    double oswinA = 0.1; // Oswin isotherm, kg/kg dry basis
     double oswinB = 0.35;
     double fallingExponent = 1.0;
-    double hConv = 15;               // W/(m2 K) at the mean air share
-    double velocityExponent = 0.8;   // h ~ u^n_u
+    double hConv = 15;             // W/(m2 K) at the mean air share
+    double velocityExponent = 0.8; // h ~ u^n_u
     // air loop
     double hotAirC = 70;
     double ambientC = 28.6;
     double ambientRH = 0.75;
     double pressure = 101325;
-    double circulation = 10;         // G, kg dry air / s through fans
-    double ventedFraction = 0.03;    // G_v / G
-    double ventShortCircuit = 0.0;   // s: share of make-up air vented without reaching the trays
-    double heaterPower = 90e3;       // W, maximum
-    double fanPower = 5e3;           // W, all fans
-    double wallUA = 200;             // W/K, walls + roof + doors
-    double airHoldup = 100;          // kg dry air inside the dryer
+    double circulation = 10;       // G, kg dry air / s through fans
+    double ventedFraction = 0.03;  // G_v / G
+    double ventShortCircuit = 0.0; // s: share of make-up air vented without reaching the trays
+    double heaterPower = 90e3;     // W, maximum
+    double fanPower = 5e3;         // W, all fans
+    double wallUA = 200;           // W/K, walls + roof + doors
+    double airHoldup = 100;        // kg dry air inside the dryer
     // air distribution (relative air shares; normalised to mean 1)
-    std::vector<double> cartFactors;   // size carts (empty = uniform)
-    std::vector<double> trayFactors;   // size traysPerCart (empty = uniform)
+    std::vector<double> cartFactors; // size carts (empty = uniform)
+    std::vector<double> trayFactors; // size traysPerCart (empty = uniform)
     // run control
-    double maxTime = 30 * 3600.0;    // s
-    double outputInterval = 600;     // s
+    double maxTime = 30 * 3600.0; // s
+    double outputInterval = 600;  // s
     double relTol = 1e-7;
 
     int trays() const { return carts * traysPerCart; }
-    double areaPerTray() const;      // m2 exposed product surface
-    std::vector<double> airShares() const;        // phi_ck, mean 1
+    double areaPerTray() const;            // m2 exposed product surface
+    std::vector<double> airShares() const; // phi_ck, mean 1
     std::vector<double> initialTrayMoisture() const;
     double equilibriumMoisture(double relativeHumidity) const;
 };
 
 struct TimePoint
 {
-    double t;            // s
-    double tSupply;      // degC
-    double tReturn;      // degC
-    double wSupply;      // kg/kg
-    double wReturn;      // kg/kg
-    double rhReturn;     // 0..1
+    double t;        // s
+    double tSupply;  // degC
+    double tReturn;  // degC
+    double wSupply;  // kg/kg
+    double wReturn;  // kg/kg
+    double rhReturn; // 0..1
     double xAvg, xMin, xMax;
     double tProductMax;  // degC
     double tProductMean; // degC
@@ -108,22 +108,22 @@ struct TimePoint
 struct BatchResult
 {
     bool reachedTarget = false;
-    double dryingTime = 0;        // s (to target, or maxTime)
-    double electricityJ = 0;      // heaters + fans up to dryingTime
+    double dryingTime = 0;   // s (to target, or maxTime)
+    double electricityJ = 0; // heaters + fans up to dryingTime
     double heaterJ = 0, fanJ = 0, wallLossJ = 0, ventNetJ = 0;
-    double waterEvaporated = 0;   // kg (product water lost)
-    double condensateKg = 0;      // kg condensed on the walls (supersaturated return air)
-    double specificEnergy = 0;    // J/kg
-    double eta = 0;               // with the given latent heat per kg
+    double waterEvaporated = 0; // kg (product water lost)
+    double condensateKg = 0;    // kg condensed on the walls (supersaturated return air)
+    double specificEnergy = 0;  // J/kg
+    double eta = 0;             // with the given latent heat per kg
     double latentPerKg = 0;
-    double tProductMax = 0;       // degC, highest tray temperature in the batch
+    double tProductMax = 0; // degC, highest tray temperature in the batch
     bool scorched = false;
-    double f1 = 0, f2 = 0;        // % of trays deviating 5-10 % and > 10 % from the mean
-    double waterBalanceRel = 0;   // |residual| / initial product water
-    double energyBalanceRel = 0;  // |residual| / heater+fan energy
+    double f1 = 0, f2 = 0;       // % of trays deviating 5-10 % and > 10 % from the mean
+    double waterBalanceRel = 0;  // |residual| / initial product water
+    double energyBalanceRel = 0; // |residual| / heater+fan energy
     std::vector<TimePoint> series;
-    std::vector<double> trayX0, trayX, trayT;   // per tray, cart-major
-    std::vector<std::vector<double>> trayXSeries;  // per output time, per tray
+    std::vector<double> trayX0, trayX, trayT;     // per tray, cart-major
+    std::vector<std::vector<double>> trayXSeries; // per output time, per tray
 };
 
 // Runs one batch.  The latent heat per kg for eta uses the convention

@@ -17,21 +17,22 @@ namespace procsim::dryer
 namespace
 {
 
-std::string fmt(double v) { return formatNumber(v, 10); }
+std::string fmt(double v)
+{
+    return formatNumber(v, 10);
+}
 
 std::vector<double> positiveList(const YamlInput& in, const std::string& key, std::size_t size,
                                  const std::string& what)
 {
     const auto v = in.numbers(key);
-    if (v.size() != size)
-        throw in.error(key, "a list of " + std::to_string(size) + " " + what);
+    if (v.size() != size) throw in.error(key, "a list of " + std::to_string(size) + " " + what);
     for (double x : v)
         if (!(x >= 0.01 && x <= 100)) throw in.error(key, "relative air shares from 0.01 to 100");
     return v;
 }
 
-double fraction(const YamlInput& in, const std::string& key, double lo, double hi,
-                const std::string& what)
+double fraction(const YamlInput& in, const std::string& key, double lo, double hi, const std::string& what)
 {
     const double v = in.number(key);
     if (!(v >= lo && v <= hi)) throw in.error(key, what);
@@ -40,10 +41,9 @@ double fraction(const YamlInput& in, const std::string& key, double lo, double h
 
 void readDryer(const YamlInput& d, DryerCase& c)
 {
-    d.rejectUnknown({"carts", "trays_per_cart", "pieces_per_tray", "air_holdup_kg",
-                     "wall_UA_W_per_K", "heater_power_kW", "fan_power_kW",
-                     "circulation_kg_per_s", "heat_transfer_coefficient_W_per_m2K",
-                     "velocity_exponent", "air_distribution"});
+    d.rejectUnknown({"carts", "trays_per_cart", "pieces_per_tray", "air_holdup_kg", "wall_UA_W_per_K",
+                     "heater_power_kW", "fan_power_kW", "circulation_kg_per_s",
+                     "heat_transfer_coefficient_W_per_m2K", "velocity_exponent", "air_distribution"});
     auto count = [&](const std::string& key) {
         const long v = d.integer(key);
         if (v < 1 || v > 1000) throw d.error(key, "an integer from 1 to 1000");
@@ -52,7 +52,7 @@ void readDryer(const YamlInput& d, DryerCase& c)
     c.carts = count("carts");
     c.traysPerCart = count("trays_per_cart");
     c.piecesPerTray = count("pieces_per_tray");
-    if (c.carts * c.traysPerCart > 2000)   // the dense implicit solve grows with the cube of the trays
+    if (c.carts * c.traysPerCart > 2000) // the dense implicit solve grows with the cube of the trays
         throw d.error("trays_per_cart", "at most 2000 trays in all (carts x trays_per_cart), got "
                                             + std::to_string(c.carts * c.traysPerCart));
     c.airHoldup = d.within("air_holdup_kg", 1e-06, 10000000.0, "kg");
@@ -72,16 +72,15 @@ void readDryer(const YamlInput& d, DryerCase& c)
             c.cartFactors = positiveList(a, "cart_factors", static_cast<std::size_t>(c.carts),
                                          "air shares, one per cart");
         if (a.has("tray_factors"))
-            c.trayFactors = positiveList(a, "tray_factors",
-                                         static_cast<std::size_t>(c.traysPerCart),
+            c.trayFactors = positiveList(a, "tray_factors", static_cast<std::size_t>(c.traysPerCart),
                                          "air shares, one per tray (top first)");
     }
 }
 
 void readProduct(const YamlInput& p, DryerCase& c)
 {
-    p.rejectUnknown({"piece_diameter_mm", "piece_length_m", "specific_heat_dry_J_per_kgK",
-                     "scorch_temperature_C"});
+    p.rejectUnknown(
+        {"piece_diameter_mm", "piece_length_m", "specific_heat_dry_J_per_kgK", "scorch_temperature_C"});
     c.pieceDiameter = p.within("piece_diameter_mm", 0.001, 10000.0, "mm") / 1e3;
     c.pieceLength = p.within("piece_length_m", 1e-06, 100, "m");
     c.cpDry = p.within("specific_heat_dry_J_per_kgK", 1, 100000.0, "J/(kg K)");
@@ -91,8 +90,8 @@ void readProduct(const YamlInput& p, DryerCase& c)
 void readKinetics(const YamlInput& k, DryerCase& c)
 {
     k.rejectUnknown({"model", "rate_constant_per_h", "reference_temperature_C",
-                     "activation_energy_kJ_per_mol", "critical_moisture_percent_db",
-                     "falling_rate_exponent", "oswin_A_percent_db", "oswin_B"});
+                     "activation_energy_kJ_per_mol", "critical_moisture_percent_db", "falling_rate_exponent",
+                     "oswin_A_percent_db", "oswin_B"});
     const std::string model = k.text("model");
     if (model == "thin-layer")
     {
@@ -116,15 +115,14 @@ void readKinetics(const YamlInput& k, DryerCase& c)
 
 void readOperation(const YamlInput& o, DryerCase& c)
 {
-    o.rejectUnknown({"ambient_temperature_C", "ambient_relative_humidity_percent",
-                     "pressure_kPa"});
+    o.rejectUnknown({"ambient_temperature_C", "ambient_relative_humidity_percent", "pressure_kPa"});
     c.pressure = o.within("pressure_kPa", 1, 10000.0, "kPa") * 1e3;
     c.ambientC = o.number("ambient_temperature_C", "degC");
     if (!(c.ambientC >= 0 && c.ambientC <= 60))
         throw o.error("ambient_temperature_C", "an ambient temperature from 0 to 60 degC");
-    c.ambientRH = fraction(o, "ambient_relative_humidity_percent", 0, 100,
-                           "a relative humidity from 0 to 100 %")
-                  / 100.0;
+    c.ambientRH =
+        fraction(o, "ambient_relative_humidity_percent", 0, 100, "a relative humidity from 0 to 100 %")
+        / 100.0;
     if (c.ambientRH * psy::saturationPressure(c.ambientC) >= c.pressure)
         throw o.error("pressure_kPa", "a pressure above the ambient vapour pressure");
 }
@@ -133,10 +131,9 @@ Venting readVenting(const YamlInput& v)
 {
     v.rejectUnknown({"vented_fraction", "vent_short_circuit_fraction"});
     Venting out;
-    out.ventedFraction = fraction(v, "vented_fraction", 0, 1,
-                                  "a fraction of the circulated air from 0 to 1");
-    out.shortCircuit = fraction(v, "vent_short_circuit_fraction", 0, 1,
-                                "a fraction of the vented air from 0 to 1");
+    out.ventedFraction = fraction(v, "vented_fraction", 0, 1, "a fraction of the circulated air from 0 to 1");
+    out.shortCircuit =
+        fraction(v, "vent_short_circuit_fraction", 0, 1, "a fraction of the vented air from 0 to 1");
     return out;
 }
 
@@ -167,7 +164,7 @@ std::pair<double, double> parameterRange(const std::string& name)
     if (name == "critical_moisture_percent_db") return {1e-6, 1e4};
     if (name == "oswin_A_percent_db") return {0, 1e4};
     if (name == "wall_UA_W_per_K") return {0, 1e8};
-    return {0, 1};   // the vented and short-circuit fractions
+    return {0, 1}; // the vented and short-circuit fractions
 }
 
 void checkParameterValue(const YamlInput& f, const std::string& key, const std::string& name, double v)
@@ -201,10 +198,15 @@ void readProfile(const YamlInput& pr, Plant& p)
 
 std::vector<std::string> Plant::parameterNames()
 {
-    return {"heat_transfer_coefficient_W_per_m2K", "rate_constant_per_h",
-            "activation_energy_kJ_per_mol", "falling_rate_exponent",
-            "critical_moisture_percent_db", "oswin_A_percent_db", "wall_UA_W_per_K",
-            "vented_fraction_all (same in every venting)", "venting.<name>.vented_fraction",
+    return {"heat_transfer_coefficient_W_per_m2K",
+            "rate_constant_per_h",
+            "activation_energy_kJ_per_mol",
+            "falling_rate_exponent",
+            "critical_moisture_percent_db",
+            "oswin_A_percent_db",
+            "wall_UA_W_per_K",
+            "vented_fraction_all (same in every venting)",
+            "venting.<name>.vented_fraction",
             "venting.<name>.vent_short_circuit_fraction"};
 }
 
@@ -259,7 +261,7 @@ void Plant::set(const std::string& name, double value)
         base.wallUA = value;
     else
     {
-        get(name);   // validates
+        get(name); // validates
         const auto dot = name.find('.', 8);
         Venting& v = venting[name.substr(8, dot - 8)];
         if (name.substr(dot + 1) == "vented_fraction")
@@ -304,8 +306,8 @@ DryerCase Plant::caseFor(const BatchSpec& b, const std::string& ventingName) con
 Plant readPlant(const std::string& path)
 {
     const YamlInput in = YamlInput::load(path);
-    in.rejectUnknown({"dryer", "product", "kinetics", "operation", "venting", "batches",
-                      "calibration", "whatif", "run"});
+    in.rejectUnknown(
+        {"dryer", "product", "kinetics", "operation", "venting", "batches", "calibration", "whatif", "run"});
     Plant p;
     p.file = path;
     readDryer(in.child("dryer"), p.base);
@@ -330,7 +332,7 @@ Plant readPlant(const std::string& path)
                          "initial_moisture_spread_percent", "pattern_seed", "measured", "note"});
         BatchSpec s;
         s.id = b.text("id");
-        checkFileNamePart(s.id, b.file() + ": key '" + b.path() + ".id'");   // names the batch's result files
+        checkFileNamePart(s.id, b.file() + ": key '" + b.path() + ".id'"); // names the batch's result files
         s.venting = b.text("venting");
         if (!p.venting.count(s.venting))
             throw b.error("venting", "the name of an arrangement under 'venting'");
@@ -338,8 +340,7 @@ Plant readPlant(const std::string& path)
         if (!(s.hotAirC > p.base.ambientC))
             throw b.error("hot_air_temperature_C",
                           "a set-point above the ambient " + fmt(p.base.ambientC) + " degC");
-        if (!(s.hotAirC <= 150))
-            throw b.error("hot_air_temperature_C", "a set-point of at most 150 degC");
+        if (!(s.hotAirC <= 150)) throw b.error("hot_air_temperature_C", "a set-point of at most 150 degC");
         s.dryMass = b.within("dry_mass_kg", 1e-06, 1000000000.0, "kg");
         s.x0 = b.within("initial_moisture_percent_db", 1e-06, 10000.0, "% dry basis") / 100;
         s.xTarget = b.within("target_moisture_percent_db", 1e-06, 10000.0, "% dry basis") / 100;
@@ -435,9 +436,8 @@ void writePlant(const Plant& p, const std::string& path, const std::string& comm
     o << "# " << comment << "\n";
     o << "dryer:\n  carts: " << c.carts << "\n  trays_per_cart: " << c.traysPerCart
       << "\n  pieces_per_tray: " << c.piecesPerTray << "\n  air_holdup_kg: " << fmt(c.airHoldup)
-      << "\n  wall_UA_W_per_K: " << fmt(c.wallUA) << "\n  heater_power_kW: "
-      << fmt(c.heaterPower / 1e3) << "\n  fan_power_kW: " << fmt(c.fanPower / 1e3)
-      << "\n  circulation_kg_per_s: " << fmt(c.circulation)
+      << "\n  wall_UA_W_per_K: " << fmt(c.wallUA) << "\n  heater_power_kW: " << fmt(c.heaterPower / 1e3)
+      << "\n  fan_power_kW: " << fmt(c.fanPower / 1e3) << "\n  circulation_kg_per_s: " << fmt(c.circulation)
       << "\n  heat_transfer_coefficient_W_per_m2K: " << fmt(c.hConv)
       << "\n  velocity_exponent: " << fmt(c.velocityExponent) << "\n";
     if (!c.cartFactors.empty() || !c.trayFactors.empty())
@@ -447,8 +447,7 @@ void writePlant(const Plant& p, const std::string& path, const std::string& comm
         if (!c.trayFactors.empty()) o << "    tray_factors: " << list(c.trayFactors) << "\n";
     }
     o << "product:\n  piece_diameter_mm: " << fmt(c.pieceDiameter * 1e3)
-      << "\n  piece_length_m: " << fmt(c.pieceLength)
-      << "\n  specific_heat_dry_J_per_kgK: " << fmt(c.cpDry)
+      << "\n  piece_length_m: " << fmt(c.pieceLength) << "\n  specific_heat_dry_J_per_kgK: " << fmt(c.cpDry)
       << "\n  scorch_temperature_C: " << fmt(c.scorchC) << "\n";
     o << "kinetics:\n";
     if (c.kinetics == DryerCase::Kinetics::ThinLayer)
@@ -456,11 +455,9 @@ void writePlant(const Plant& p, const std::string& path, const std::string& comm
           << "\n  reference_temperature_C: " << fmt(c.referenceC)
           << "\n  activation_energy_kJ_per_mol: " << fmt(c.activationEnergy / 1e3) << "\n";
     else
-        o << "  model: characteristic-curve\n  critical_moisture_percent_db: "
-          << fmt(c.xCritical * 100) << "\n  falling_rate_exponent: " << fmt(c.fallingExponent)
-          << "\n";
-    o << "  oswin_A_percent_db: " << fmt(c.oswinA * 100) << "\n  oswin_B: " << fmt(c.oswinB)
-      << "\n";
+        o << "  model: characteristic-curve\n  critical_moisture_percent_db: " << fmt(c.xCritical * 100)
+          << "\n  falling_rate_exponent: " << fmt(c.fallingExponent) << "\n";
+    o << "  oswin_A_percent_db: " << fmt(c.oswinA * 100) << "\n  oswin_B: " << fmt(c.oswinB) << "\n";
     o << "operation:\n  ambient_temperature_C: " << fmt(c.ambientC)
       << "\n  ambient_relative_humidity_percent: " << fmt(c.ambientRH * 100)
       << "\n  pressure_kPa: " << fmt(c.pressure / 1e3) << "\n";
@@ -474,8 +471,8 @@ void writePlant(const Plant& p, const std::string& path, const std::string& comm
     for (const auto& b : p.batches)
     {
         o << "  - id: \"" << b.id << "\"\n    venting: " << b.venting
-          << "\n    hot_air_temperature_C: " << fmt(b.hotAirC) << "\n    dry_mass_kg: "
-          << fmt(b.dryMass) << "\n    initial_moisture_percent_db: " << fmt(b.x0 * 100)
+          << "\n    hot_air_temperature_C: " << fmt(b.hotAirC) << "\n    dry_mass_kg: " << fmt(b.dryMass)
+          << "\n    initial_moisture_percent_db: " << fmt(b.x0 * 100)
           << "\n    target_moisture_percent_db: " << fmt(b.xTarget * 100)
           << "\n    initial_moisture_spread_percent: " << fmt(b.x0Spread * 100)
           << "\n    pattern_seed: " << b.seed << "\n";
@@ -485,8 +482,8 @@ void writePlant(const Plant& p, const std::string& path, const std::string& comm
             if (b.measuredTime)
             {
                 const long m = std::lround(*b.measuredTime / 60);
-                o << "      drying_time: \"" << m / 60 << ":" << std::setw(2) << std::setfill('0')
-                  << m % 60 << std::setfill(' ') << "\"\n";
+                o << "      drying_time: \"" << m / 60 << ":" << std::setw(2) << std::setfill('0') << m % 60
+                  << std::setfill(' ') << "\"\n";
             }
             if (b.measuredElectricity)
                 o << "      electricity_kWh: " << fmt(*b.measuredElectricity / 3.6e6) << "\n";

@@ -21,19 +21,19 @@ struct Venting
 struct BatchSpec
 {
     std::string id;
-    std::string venting;     // key into Plant::venting
+    std::string venting; // key into Plant::venting
     double hotAirC = 70;
     double dryMass = 0;
     double x0 = 0, xTarget = 0, x0Spread = 0;
     unsigned seed = 1;
-    std::optional<double> measuredTime;          // s
-    std::optional<double> measuredElectricity;   // J
+    std::optional<double> measuredTime;        // s
+    std::optional<double> measuredElectricity; // J
     std::optional<double> measuredF1, measuredF2;
 };
 
 struct FitParameter
 {
-    std::string name;   // see Plant::parameterNames()
+    std::string name; // see Plant::parameterNames()
     double lower = 0, upper = 0;
 };
 
@@ -41,28 +41,28 @@ struct FitParameter
 // the parameter is held at each value in turn while the rest are refitted.
 struct ProfileAxis
 {
-    std::string name;   // see Plant::parameterNames()
+    std::string name; // see Plant::parameterNames()
     std::vector<double> values;
 };
 
 struct Plant
 {
     std::string file;
-    DryerCase base;                      // dryer, product, kinetics, operation, run
+    DryerCase base; // dryer, product, kinetics, operation, run
     std::map<std::string, Venting> venting;
     std::vector<BatchSpec> batches;
     // calibration
     std::vector<FitParameter> fit;
     std::vector<std::string> calibrateOn, predict;
-    std::string predictVenting;          // venting used for the predicted batches
+    std::string predictVenting; // venting used for the predicted batches
     // profile: grid over the held parameters; a refit counts as fitting the
     // calibration batches if every relative error is within the tolerances
     std::vector<ProfileAxis> profile;
-    double timeTolerance = 0, electricityTolerance = 0;   // relative
+    double timeTolerance = 0, electricityTolerance = 0; // relative
     // what-if
     std::string whatifBatch;
     std::string whatifVenting;
-    std::vector<double> whatifTemperatures;   // degC
+    std::vector<double> whatifTemperatures; // degC
     std::vector<double> whatifVentedFractions;
 
     const BatchSpec& batch(const std::string& id) const;

@@ -22,7 +22,7 @@ namespace
 // The dry bulb T and pressure P, and exactly one of the humidity measures.
 struct PsychroArgs
 {
-    std::optional<double> t, p, rh, w, twb, tdew;   // degC, kPa, %, kg/kg, degC, degC
+    std::optional<double> t, p, rh, w, twb, tdew; // degC, kPa, %, kg/kg, degC, degC
 };
 
 std::optional<PsychroArgs> parse(CommandLine& cl, int argc, char** argv)
@@ -36,7 +36,8 @@ std::optional<PsychroArgs> parse(CommandLine& cl, int argc, char** argv)
     cl.number("--p", a.p);
     if (!cl.parse(argc, argv)) return std::nullopt;
     if (!a.t) throw InputError("dryer psychro: option --t (dry bulb, degC) is required");
-    if (!(*a.t >= -100 && *a.t <= 200)) throw cl.refuse("--t", "a dry bulb from -100 to 200 degC", formatNumber(*a.t));
+    if (!(*a.t >= -100 && *a.t <= 200))
+        throw cl.refuse("--t", "a dry bulb from -100 to 200 degC", formatNumber(*a.t));
     if (a.p && !(*a.p > 0)) throw cl.refuse("--p", "a positive pressure [kPa]", formatNumber(*a.p));
     if (bool(a.rh) + bool(a.w) + bool(a.twb) + bool(a.tdew) != 1)
         throw InputError("dryer psychro: give exactly one of --rh, --w, --twb, --tdew");
@@ -51,14 +52,16 @@ double humidityRatio(const CommandLine& cl, const PsychroArgs& a, double t, doub
     {
         if (!(*a.rh >= 0 && *a.rh <= 100)) throw cl.refuse("--rh", "0 to 100 %", formatNumber(*a.rh));
         if (*a.rh / 100 * psy::saturationPressure(t) >= p)
-            throw InputError("dryer psychro: option --rh gives a vapour pressure at or above the total pressure");
+            throw InputError(
+                "dryer psychro: option --rh gives a vapour pressure at or above the total pressure");
         return psy::humidityRatioFromRH(t, *a.rh / 100, p);
     }
     if (a.w)
     {
         if (!(*a.w >= 0)) throw cl.refuse("--w", "a humidity ratio >= 0", formatNumber(*a.w));
         if (psy::relativeHumidity(t, *a.w, p) > 1 + 1e-12)
-            throw InputError("dryer psychro: option --w is above saturation at this dry bulb (relative humidity over 100 %)");
+            throw InputError(
+                "dryer psychro: option --w is above saturation at this dry bulb (relative humidity over 100 %)");
         return *a.w;
     }
     if (a.twb)
@@ -66,7 +69,8 @@ double humidityRatio(const CommandLine& cl, const PsychroArgs& a, double t, doub
         if (!(*a.twb <= t && *a.twb >= -100))
             throw cl.refuse("--twb", "a wet bulb at or below the dry bulb", formatNumber(*a.twb));
         const double W = psy::humidityRatioFromWetBulb(t, *a.twb, p);
-        if (!(W >= 0)) throw InputError("dryer psychro: option --twb is too low for any humidity at this dry bulb");
+        if (!(W >= 0))
+            throw InputError("dryer psychro: option --twb is too low for any humidity at this dry bulb");
         return W;
     }
     if (!(*a.tdew <= t && *a.tdew >= -100))
@@ -101,7 +105,7 @@ int psychroCommand(int argc, char** argv)
     {
         report(t, humidityRatio(cl, *args, t, p), p);
     }
-    catch (const std::domain_error& e)   // a state the formulation cannot reach
+    catch (const std::domain_error& e) // a state the formulation cannot reach
     {
         throw InputError(std::string("dryer psychro: ") + e.what());
     }

@@ -134,14 +134,12 @@ double humidityRatioFromWetBulb(double tC, double twb, double p)
                / (kHfg0 + kCpVapour * tC - kCpWater * twb);
     }
     // over ice, eq (37): sublimation 2830 kJ/kg, ice cp 2.1 kJ/(kg K)
-    return ((2830.0e3 - 240.0 * twb) * ws - kCpAir * (tC - twb))
-           / (2830.0e3 + kCpVapour * tC - 2100.0 * twb);
+    return ((2830.0e3 - 240.0 * twb) * ws - kCpAir * (tC - twb)) / (2830.0e3 + kCpVapour * tC - 2100.0 * twb);
 }
 
 double wetBulb(double tC, double W, double p)
 {
-    if (!(tC >= kTmin && tC <= kTmax))
-        throw std::domain_error("wet bulb: dry bulb outside -100..200 degC");
+    if (!(tC >= kTmin && tC <= kTmax)) throw std::domain_error("wet bulb: dry bulb outside -100..200 degC");
     if (!(W >= 0.0)) throw std::domain_error("wet bulb: negative humidity ratio");
     // The wet bulb lies between the dew point and the dry bulb, and below the
     // boiling point at p (where W_s* is infinite).
@@ -162,10 +160,10 @@ double wetBulb(double tC, double W, double p)
     if (hi == tC && std::fabs(g(hi)) <= 1e-12 * (1.0 + W)) return tC;
     if (g(hi) < 0.0)
     {
-        throw std::domain_error("wet bulb: air is supersaturated (W above saturation at "
-                                + std::to_string(tC) + " degC)");
+        throw std::domain_error("wet bulb: air is supersaturated (W above saturation at " + std::to_string(tC)
+                                + " degC)");
     }
-    if (g(lo) > 0.0) return lo;   // only at saturation, where lo == hi up to round-off
+    if (g(lo) > 0.0) return lo; // only at saturation, where lo == hi up to round-off
     return bisect(g, lo, hi);
 }
 

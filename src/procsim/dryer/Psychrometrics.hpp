@@ -19,13 +19,13 @@
 namespace procsim::dryer::psy
 {
 
-constexpr double kMolarRatio = 0.621945;     // M_water / M_dry air
-constexpr double kRa = 287.042;              // J/(kg K), dry air
-constexpr double kCpAir = 1006.0;            // J/(kg K), dry air
-constexpr double kCpVapour = 1860.0;         // J/(kg K), water vapour
-constexpr double kCpWater = 4186.0;          // J/(kg K), liquid water
-constexpr double kHfg0 = 2501.0e3;           // J/kg, vaporisation at 0 degC
-constexpr double kAtm = 101325.0;            // Pa
+constexpr double kMolarRatio = 0.621945; // M_water / M_dry air
+constexpr double kRa = 287.042;          // J/(kg K), dry air
+constexpr double kCpAir = 1006.0;        // J/(kg K), dry air
+constexpr double kCpVapour = 1860.0;     // J/(kg K), water vapour
+constexpr double kCpWater = 4186.0;      // J/(kg K), liquid water
+constexpr double kHfg0 = 2501.0e3;       // J/kg, vaporisation at 0 degC
+constexpr double kAtm = 101325.0;        // Pa
 
 // Saturation pressure of water vapour [Pa]; over ice below 0 degC.
 // Valid -100..200 degC; throws std::domain_error outside.
@@ -42,11 +42,11 @@ double saturationHumidityRatio(double tC, double p);
 double relativeHumidity(double tC, double W, double p);     // 0..1 (can exceed 1 if supersaturated)
 double humidityRatioFromRH(double tC, double rh, double p); // throws if pw >= p
 
-double enthalpy(double tC, double W);                // J/kg dry air
-double temperatureFromEnthalpy(double h, double W);  // degC
-double dewPoint(double W, double p);                 // degC
-double specificVolume(double tC, double W, double p);  // m^3/kg dry air
-double density(double tC, double W, double p);       // kg moist air / m^3
+double enthalpy(double tC, double W);                 // J/kg dry air
+double temperatureFromEnthalpy(double h, double W);   // degC
+double dewPoint(double W, double p);                  // degC
+double specificVolume(double tC, double W, double p); // m^3/kg dry air
+double density(double tC, double W, double p);        // kg moist air / m^3
 
 // Thermodynamic wet-bulb temperature [degC] for dry-bulb tC and humidity W.
 // Bisection between the dew point and min(tC, boiling point at p).

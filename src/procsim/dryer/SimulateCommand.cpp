@@ -24,14 +24,15 @@ namespace
 struct SimulateArgs
 {
     std::string plant;
-    std::optional<std::string> batch;   // none: every batch
+    std::optional<std::string> batch; // none: every batch
     std::string out = ".";
 };
 
 std::optional<SimulateArgs> parse(int argc, char** argv)
 {
     SimulateArgs a;
-    CommandLine cl("dryer simulate", std::string(texts::help::simulate) + "\n" + std::string(texts::help::plant));
+    CommandLine cl("dryer simulate",
+                   std::string(texts::help::simulate) + "\n" + std::string(texts::help::plant));
     cl.input(a.plant, "plant file");
     cl.text("--batch", a.batch);
     cl.text("--out", a.out);
@@ -44,7 +45,8 @@ void writeSeries(const std::string& base, const BatchResult& r)
     CsvWriter s(base + "_series.csv",
                 {"time_h", "T_supply_C", "T_return_C", "W_supply_kg_per_kg", "W_return_kg_per_kg",
                  "RH_return_percent", "X_mean_percent_db", "X_min_percent_db", "X_max_percent_db",
-                 "T_product_mean_C", "T_product_max_C", "heater_kW", "evaporation_kg_per_h", "electricity_kWh"});
+                 "T_product_mean_C", "T_product_max_C", "heater_kW", "evaporation_kg_per_h",
+                 "electricity_kWh"});
     for (const auto& p : r.series)
         s.row(std::vector<double>{p.t / 3600, p.tSupply, p.tReturn, p.wSupply, p.wReturn, p.rhReturn * 100,
                                   p.xAvg * 100, p.xMin * 100, p.xMax * 100, p.tProductMean, p.tProductMax,
@@ -59,14 +61,14 @@ void writeTrays(const std::string& base, const DryerCase& c, const BatchResult& 
     const auto phi = c.airShares();
     double mean = 0;
     for (double x : r.trayX) mean += x / r.trayX.size();
-    CsvWriter t(base + "_trays.csv", {"cart", "tray", "air_share", "X_initial_percent_db", "X_final_percent_db",
-                                      "deviation_percent", "T_product_final_C"});
+    CsvWriter t(base + "_trays.csv", {"cart", "tray", "air_share", "X_initial_percent_db",
+                                      "X_final_percent_db", "deviation_percent", "T_product_final_C"});
     for (int ci = 0; ci < c.carts; ++ci)
         for (int k = 0; k < c.traysPerCart; ++k)
         {
             const std::size_t i = static_cast<std::size_t>(ci * c.traysPerCart + k);
-            t.row(std::vector<double>{double(ci + 1), double(k + 1), phi[i], r.trayX0[i] * 100, r.trayX[i] * 100,
-                                      (r.trayX[i] / mean - 1) * 100, r.trayT[i]});
+            t.row(std::vector<double>{double(ci + 1), double(k + 1), phi[i], r.trayX0[i] * 100,
+                                      r.trayX[i] * 100, (r.trayX[i] / mean - 1) * 100, r.trayT[i]});
         }
     t.close();
 }
@@ -97,7 +99,7 @@ void writeBatchOutputs(const std::string& dir, const DryerCase& c, const BatchRe
             PlotVariables().set("csv", base + "_series.csv").set("name", c.name), 1000, 1000);
 }
 
-std::string timeCell(const BatchResult& r)   // "7:05", or ">30:00" when the target was not reached
+std::string timeCell(const BatchResult& r) // "7:05", or ">30:00" when the target was not reached
 {
     return (r.reachedTarget ? "" : ">") + formatHoursMinutes(r.dryingTime);
 }
@@ -110,18 +112,28 @@ void printHeader()
 
 void printBatch(const std::string& id, const BatchResult& r)
 {
-    fmt::print("{:<7}{:>8}{:>10.1f}{:>10.1f}{:>10.0f}{:>8.1f}{:>8.1f}{:>7.1f}{:>7.1f}{:>11.1e}{:>11.1e}{}\n", id,
-               timeCell(r), r.electricityJ / 3.6e6, r.waterEvaporated, r.specificEnergy / 1e3, r.eta * 100,
-               r.tProductMax, r.f1, r.f2, r.waterBalanceRel, r.energyBalanceRel, r.scorched ? "  SCORCHED" : "");
+    fmt::print("{:<7}{:>8}{:>10.1f}{:>10.1f}{:>10.0f}{:>8.1f}{:>8.1f}{:>7.1f}{:>7.1f}{:>11.1e}{:>11.1e}{}\n",
+               id, timeCell(r), r.electricityJ / 3.6e6, r.waterEvaporated, r.specificEnergy / 1e3,
+               r.eta * 100, r.tProductMax, r.f1, r.f2, r.waterBalanceRel, r.energyBalanceRel,
+               r.scorched ? "  SCORCHED" : "");
 }
 
 std::vector<std::string> summaryRow(const std::string& id, const BatchResult& r)
 {
-    return {id, r.reachedTarget ? "1" : "0", formatFixed(r.dryingTime / 3600, 4),
-            formatFixed(r.electricityJ / 3.6e6, 3), formatFixed(r.waterEvaporated, 3),
-            formatFixed(r.specificEnergy / 1e3, 3), formatFixed(r.eta * 100, 3), formatFixed(r.tProductMax, 3),
-            r.scorched ? "1" : "0", formatFixed(r.f1, 2), formatFixed(r.f2, 2), formatFixed(r.condensateKg, 3),
-            formatScientific(r.waterBalanceRel, 1), formatScientific(r.energyBalanceRel, 1)};
+    return {id,
+            r.reachedTarget ? "1" : "0",
+            formatFixed(r.dryingTime / 3600, 4),
+            formatFixed(r.electricityJ / 3.6e6, 3),
+            formatFixed(r.waterEvaporated, 3),
+            formatFixed(r.specificEnergy / 1e3, 3),
+            formatFixed(r.eta * 100, 3),
+            formatFixed(r.tProductMax, 3),
+            r.scorched ? "1" : "0",
+            formatFixed(r.f1, 2),
+            formatFixed(r.f2, 2),
+            formatFixed(r.condensateKg, 3),
+            formatScientific(r.waterBalanceRel, 1),
+            formatScientific(r.energyBalanceRel, 1)};
 }
 
 } // namespace
@@ -133,7 +145,8 @@ int simulateCommand(int argc, char** argv)
     const Plant plant = readPlant(args->plant);
     createOutputDirectory(args->out);
     std::vector<const BatchSpec*> todo;
-    if (args->batch) todo.push_back(&plant.batch(*args->batch));
+    if (args->batch)
+        todo.push_back(&plant.batch(*args->batch));
     else
         for (const auto& b : plant.batches) todo.push_back(&b);
     CsvWriter sum(args->out + "/simulate_summary.csv",

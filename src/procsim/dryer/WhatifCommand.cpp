@@ -40,7 +40,7 @@ std::optional<WhatifArgs> parse(int argc, char** argv)
 struct Best
 {
     double energy = 1e300, time = 1e300;
-    std::string lowestEnergy, fastest;   // descriptions, empty if none qualifies
+    std::string lowestEnergy, fastest; // descriptions, empty if none qualifies
 
     void consider(double T, double v, const BatchResult& r)
     {
@@ -78,8 +78,9 @@ Best sweep(const Plant& plant, const BatchSpec& b, const std::string& path)
             c.ventedFraction = v;
             const BatchResult r = simulate(c);
             printPoint(T, v, r);
-            csv.row(std::vector<double>{T, v, r.reachedTarget ? 1.0 : 0.0, r.dryingTime / 3600, r.electricityJ / 3.6e6,
-                                        r.specificEnergy / 1e3, r.eta * 100, r.tProductMax, r.scorched ? 1.0 : 0.0});
+            csv.row(std::vector<double>{T, v, r.reachedTarget ? 1.0 : 0.0, r.dryingTime / 3600,
+                                        r.electricityJ / 3.6e6, r.specificEnergy / 1e3, r.eta * 100,
+                                        r.tProductMax, r.scorched ? 1.0 : 0.0});
             best.consider(T, v, r);
         }
         csv.row(std::vector<std::string>{});
@@ -97,8 +98,8 @@ void plot(const Plant& plant, const BatchSpec& b, const std::string& dir)
     vars.set("csv", dir + "/whatif.csv")
         .set("nblocks", double(plant.whatifVentedFractions.size()))
         .set("fractions", fractions)
-        .set("title_text", fmt::format("batch {}, venting {} (red: scorched, product above {:.0f} degC)", b.id,
-                                       plant.whatifVenting, plant.base.scorchC));
+        .set("title_text", fmt::format("batch {}, venting {} (red: scorched, product above {:.0f} degC)",
+                                       b.id, plant.whatifVenting, plant.base.scorchC));
     plotPng(dir + "/whatif_time.png", texts::plots::whatif,
             PlotVariables(vars).set("ycol", 4).set("ylabel_text", "drying time [h]"));
     plotPng(dir + "/whatif_energy.png", texts::plots::whatif,
@@ -108,7 +109,8 @@ void plot(const Plant& plant, const BatchSpec& b, const std::string& dir)
 void report(const Plant& plant, const Best& best, const std::string& dir)
 {
     fmt::print("\nscorch limit: product temperature {:.1f} degC\n", plant.base.scorchC);
-    if (best.lowestEnergy.empty()) fmt::print("best setting: none reaches the target without scorching\n");
+    if (best.lowestEnergy.empty())
+        fmt::print("best setting: none reaches the target without scorching\n");
     else
     {
         fmt::print("best setting (lowest E without scorching): {}\n", best.lowestEnergy);
@@ -124,7 +126,8 @@ int whatifCommand(int argc, char** argv)
     const auto args = parse(argc, argv);
     if (!args) return 0;
     const Plant plant = readPlant(args->plant);
-    if (plant.whatifBatch.empty()) throw InputError(plant.file + ": key 'whatif' is missing (needed by whatif)");
+    if (plant.whatifBatch.empty())
+        throw InputError(plant.file + ": key 'whatif' is missing (needed by whatif)");
     createOutputDirectory(args->out);
     const BatchSpec& b = plant.batch(plant.whatifBatch);
     const Best best = sweep(plant, b, args->out + "/whatif.csv");

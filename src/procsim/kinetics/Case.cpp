@@ -13,7 +13,7 @@ namespace procsim::kinetics
 namespace
 {
 
-constexpr long maxReportTimes = 1000000;   // rows of timeseries.csv
+constexpr long maxReportTimes = 1000000; // rows of timeseries.csv
 
 std::vector<std::string> splitDots(const std::string& key)
 {
@@ -89,7 +89,9 @@ SweepDim parseSweep(const std::string& arg)
     while (std::getline(ss, v, ','))
     {
         const auto x = parseFinite(v);
-        if (!x) throw InputError("--sweep " + d.key + ": expected finite numbers separated by commas, got '" + v + "'");
+        if (!x)
+            throw InputError("--sweep " + d.key + ": expected finite numbers separated by commas, got '" + v
+                             + "'");
         d.values.push_back(*x);
     }
     if (d.values.empty()) throw InputError("--sweep " + d.key + ": no values given");
@@ -101,8 +103,10 @@ double Case::radicalConcentration() const
     if (!radicalFixed()) return 0;
     const double mw = mech.species[mech.radicalIndex()].molarMass;
     double mgPerL = 0;
-    if (oh.kind == "constant") mgPerL = oh.concentration;
-    else if (oh.kind == "linear_current") mgPerL = oh.intercept + oh.slope * current;
+    if (oh.kind == "constant")
+        mgPerL = oh.concentration;
+    else if (oh.kind == "linear_current")
+        mgPerL = oh.intercept + oh.slope * current;
     return mgPerL / 1000.0 / mw;
 }
 
@@ -153,8 +157,8 @@ void applyOverrides(const Overrides& overrides, const std::string& file, Mechani
         if (r == std::string::npos)
             throw InputError(mech.file + ": no reaction with id '" + id + "' (from '" + key + "')");
         if (!(value >= 0 && value <= maxRateConstant))
-            throw InputError(key + ": a rate constant must be from 0 to " + formatNumber(maxRateConstant) + ", got "
-                             + formatNumber(value));
+            throw InputError(key + ": a rate constant must be from 0 to " + formatNumber(maxRateConstant)
+                             + ", got " + formatNumber(value));
         mech.reactions[r].k = value;
     }
 }
@@ -218,7 +222,8 @@ void readOh(const YamlInput& in, Case& c)
 {
     if (!in.has("oh"))
     {
-        if (c.mech.hasRadical()) throw in.error("oh", "a section 'oh' (the mechanism has radical " + c.mech.radical + ")");
+        if (c.mech.hasRadical())
+            throw in.error("oh", "a section 'oh' (the mechanism has radical " + c.mech.radical + ")");
         return;
     }
     const YamlInput oh = in.child("oh");
@@ -236,15 +241,16 @@ void readOh(const YamlInput& in, Case& c)
         oh.rejectUnknown({"model", "slope_mg_per_L_per_mA", "intercept_mg_per_L"});
         c.oh.slope = oh.within("slope_mg_per_L_per_mA", 0, 1e6, "mg/L per mA");
         c.oh.intercept = oh.within("intercept_mg_per_L", 0.0, -1e6, 1e6, "mg/L");
-        if (!in.has("corona")) throw in.error("corona", "a section with current_mA (oh.model is linear_current)");
+        if (!in.has("corona"))
+            throw in.error("corona", "a section with current_mA (oh.model is linear_current)");
     }
     else if (c.oh.kind == "dynamic")
         oh.rejectUnknown({"model"});
     else
         throw oh.error("model", "one of constant, linear_current, dynamic");
     if (c.radicalFixed() && c.radicalConcentration() < 0)
-        throw InputError(c.file + ": key 'oh' gives a negative [OH] at the current " + std::to_string(c.current)
-                         + " mA");
+        throw InputError(c.file + ": key 'oh' gives a negative [OH] at the current "
+                         + std::to_string(c.current) + " mA");
 }
 
 // Duration and output interval, each in either of two units, and a number
@@ -256,13 +262,20 @@ void readTime(const YamlInput& in, Case& c)
     for (const auto& [a, b] : {std::pair<const char*, const char*>{"duration_h", "duration_s"},
                                {"output_interval_min", "output_interval_s"}})
         if (time.has(a) && time.has(b))
-            throw InputError(c.file + ": keys 'time." + a + "' and 'time." + b + "' both given (expected one of them)");
-    if (time.has("duration_h")) c.duration = 3600.0 * time.within("duration_h", 1e-9, 1e9, "h");
-    else if (time.has("duration_s")) c.duration = time.within("duration_s", 1e-9, 3.6e12, "s");
-    else throw time.error("duration_h", "a positive number [h] (or duration_s)");
-    if (time.has("output_interval_min")) c.outputInterval = 60.0 * time.positive("output_interval_min", "min");
-    else if (time.has("output_interval_s")) c.outputInterval = time.positive("output_interval_s", "s");
-    else throw time.error("output_interval_min", "a positive number [min] (or output_interval_s)");
+            throw InputError(c.file + ": keys 'time." + a + "' and 'time." + b
+                             + "' both given (expected one of them)");
+    if (time.has("duration_h"))
+        c.duration = 3600.0 * time.within("duration_h", 1e-9, 1e9, "h");
+    else if (time.has("duration_s"))
+        c.duration = time.within("duration_s", 1e-9, 3.6e12, "s");
+    else
+        throw time.error("duration_h", "a positive number [h] (or duration_s)");
+    if (time.has("output_interval_min"))
+        c.outputInterval = 60.0 * time.positive("output_interval_min", "min");
+    else if (time.has("output_interval_s"))
+        c.outputInterval = time.positive("output_interval_s", "s");
+    else
+        throw time.error("output_interval_min", "a positive number [min] (or output_interval_s)");
     if (c.outputInterval > c.duration)
         throw time.error("output_interval_min", "an interval no longer than the duration");
     stepCount(c.duration, c.outputInterval, maxReportTimes, c.file + ": key 'time'",
@@ -286,13 +299,14 @@ void readSolver(const YamlInput& in, Case& c)
 
 // The scalar items of a list, each checked by `check` (which throws).
 template <class Check>
-std::vector<std::string> readNames(const YamlInput& list, const std::string& file, const std::string& expected,
-                                   Check check)
+std::vector<std::string> readNames(const YamlInput& list, const std::string& file,
+                                   const std::string& expected, Check check)
 {
     std::vector<std::string> names;
     for (const auto& item : list.items())
     {
-        if (!item.node().IsScalar()) throw InputError(file + ": key '" + item.path() + "' expected " + expected);
+        if (!item.node().IsScalar())
+            throw InputError(file + ": key '" + item.path() + "' expected " + expected);
         names.push_back(item.node().as<std::string>());
         check(names.back(), file + ": key '" + item.path() + "'");
     }
@@ -307,12 +321,14 @@ void readReport(const YamlInput& in, Case& c)
     if (rep.has("times_h"))
         for (double t : rep.numbers("times_h", "h"))
         {
-            if (t < 0 || t * 3600.0 > c.duration * (1 + 1e-12)) throw rep.error("times_h", "times within the run [h]");
+            if (t < 0 || t * 3600.0 > c.duration * (1 + 1e-12))
+                throw rep.error("times_h", "times within the run [h]");
             c.reportTimes.push_back(t * 3600.0);
         }
     if (rep.has("plot_species"))
-        c.plotSpecies = readNames(rep.child("plot_species"), c.file, "a species name",
-                                  [&](const std::string& name, const std::string& where) { c.mech.index(name, where); });
+        c.plotSpecies =
+            readNames(rep.child("plot_species"), c.file, "a species name",
+                      [&](const std::string& name, const std::string& where) { c.mech.index(name, where); });
 }
 
 void readSweep(const YamlInput& in, Case& c)

@@ -11,22 +11,22 @@
 namespace procsim::kinetics
 {
 
-constexpr double gasConstant = 8.314462618;   // J/(mol K)
+constexpr double gasConstant = 8.314462618; // J/(mol K)
 
 struct SolverOptions
 {
-    std::string method = "expm";   // expm | rk4 | cvode
-    double rk4Step = 10;           // s
+    std::string method = "expm"; // expm | rk4 | cvode
+    double rk4Step = 10;         // s
     double rtol = 1e-8;
-    double atol = 1e-16;           // mol/L
+    double atol = 1e-16; // mol/L
 };
 
 struct OhModel
 {
-    std::string kind = "none";     // none | constant | linear_current | dynamic
-    double concentration = 0;      // mg/L (constant)
-    double slope = 0;              // mg/L per mA (linear_current)
-    double intercept = 0;          // mg/L (linear_current)
+    std::string kind = "none"; // none | constant | linear_current | dynamic
+    double concentration = 0;  // mg/L (constant)
+    double slope = 0;          // mg/L per mA (linear_current)
+    double intercept = 0;      // mg/L (linear_current)
 };
 
 struct SweepDim
@@ -45,26 +45,26 @@ struct Case
     std::string title;
     Mechanism mech;
 
-    double volume = 1;             // L of liquid
-    double gasFlow = 0;            // mol/s of feed gas (from volumetric flow, T, p)
-    std::vector<double> inletPpm;  // per species, mol ppm in the feed gas
+    double volume = 1;            // L of liquid
+    double gasFlow = 0;           // mol/s of feed gas (from volumetric flow, T, p)
+    std::vector<double> inletPpm; // per species, mol ppm in the feed gas
     std::vector<double> effluentPpm;
-    std::vector<double> initial;   // per species, mol/L
-    double current = 0;            // mA
-    double voltage = 0;            // kV (0 = not given)
+    std::vector<double> initial; // per species, mol/L
+    double current = 0;          // mA
+    double voltage = 0;          // kV (0 = not given)
     OhModel oh;
-    double duration = 0;           // s
-    double outputInterval = 0;     // s
+    double duration = 0;       // s
+    double outputInterval = 0; // s
     SolverOptions solver;
-    std::vector<double> reportTimes;          // s
+    std::vector<double> reportTimes; // s
     std::vector<std::string> plotSpecies;
     std::vector<SweepDim> sweep;
 
     // sensitivity defaults (case section 'sensitivity')
     std::vector<std::string> sensParameters;
     std::vector<std::string> sensOutputs;
-    double sensTime = 0;           // s (0 = end of run)
-    double sensChange = 0.10;      // relative change
+    double sensTime = 0;      // s (0 = end of run)
+    double sensChange = 0.10; // relative change
 
     // pseudo-steady radical concentration, mol/L (0 if no fixed radical)
     double radicalConcentration() const;

@@ -10,10 +10,10 @@
 namespace procsim::kinetics
 {
 
-int runCommand(int argc, char** argv);           // RunCommand.cpp
-int sensitivityCommand(int argc, char** argv);   // SensitivityCommand.cpp
-int fitCommand(int argc, char** argv);           // FitCommand.cpp
-int coronaCommand(int argc, char** argv);        // CoronaCommand.cpp
+int runCommand(int argc, char** argv);         // RunCommand.cpp
+int sensitivityCommand(int argc, char** argv); // SensitivityCommand.cpp
+int fitCommand(int argc, char** argv);         // FitCommand.cpp
+int coronaCommand(int argc, char** argv);      // CoronaCommand.cpp
 
 // The values of --set KEY=VALUE (run and sensitivity), each key once.
 Overrides parseSetOptions(const std::vector<std::string>& words, const std::string& command);

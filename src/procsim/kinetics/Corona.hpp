@@ -10,14 +10,15 @@
 namespace procsim::kinetics::corona
 {
 
-constexpr double boltzmann = 1.380649e-23;   // J/K
-constexpr double townsend = 1e-21;           // V m^2
+constexpr double boltzmann = 1.380649e-23; // J/K
+constexpr double townsend = 1e-21;         // V m^2
 
-double numberDensity(double pressurePa, double temperatureK);                        // 1/m^3
-double field(double voltage, double r, double anodeRadius, double wireRadius);       // V/m (eq 1)
-double meanEOverN(double voltage, double anodeRadius, double wireRadius, double n);  // V m^2 (eq 2)
-double removalEfficiency(double outletNoDischarge, double outletDischarge);          // eq 1 (acetaldehyde)
-double residenceCorrected(double psi, double temperatureK, double referenceK);       // eq 2 (acetaldehyde)
-double energeticEfficiency(double molarFlowIn, double molarFlowOut, double currentA, double voltageV);  // mol/J
+double numberDensity(double pressurePa, double temperatureK);                       // 1/m^3
+double field(double voltage, double r, double anodeRadius, double wireRadius);      // V/m (eq 1)
+double meanEOverN(double voltage, double anodeRadius, double wireRadius, double n); // V m^2 (eq 2)
+double removalEfficiency(double outletNoDischarge, double outletDischarge);         // eq 1 (acetaldehyde)
+double residenceCorrected(double psi, double temperatureK, double referenceK);      // eq 2 (acetaldehyde)
+double energeticEfficiency(double molarFlowIn, double molarFlowOut, double currentA,
+                           double voltageV); // mol/J
 
 } // namespace procsim::kinetics::corona

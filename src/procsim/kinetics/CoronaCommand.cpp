@@ -27,7 +27,7 @@ using namespace corona;
 struct CoronaArgs
 {
     std::string file;
-    std::string output;   // empty: <file name>_out
+    std::string output; // empty: <file name>_out
 };
 
 std::optional<CoronaArgs> parse(int argc, char** argv)
@@ -48,16 +48,21 @@ std::string label(const YamlInput& item, std::size_t i)
 double kelvin(const YamlInput& item, const std::string& key)
 {
     const double t = item.number(key, "degC");
-    if (!(t > -273.15 && t <= 5000)) throw item.error(key, "a temperature above absolute zero and up to 5000 [degC]");
+    if (!(t > -273.15 && t <= 5000))
+        throw item.error(key, "a temperature above absolute zero and up to 5000 [degC]");
     return t + 273.15;
 }
 
-std::string num(double v) { return formatNumber(v); }
+std::string num(double v)
+{
+    return formatNumber(v);
+}
 
 // Toluene paper eqs 1-2: the field at wire and anode, N and the area-mean E/N.
 std::vector<std::string> meanEn(const YamlInput& it, std::size_t i)
 {
-    it.rejectUnknown({"label", "voltage_kV", "wire_diameter_mm", "anode_diameter_mm", "temperature_C", "pressure_kPa"});
+    it.rejectUnknown(
+        {"label", "voltage_kV", "wire_diameter_mm", "anode_diameter_mm", "temperature_C", "pressure_kPa"});
     const double v = it.within("voltage_kV", 1e-6, 1e4, "kV") * 1e3;
     const double r0 = it.within("wire_diameter_mm", 1e-6, 1e4, "mm") * 0.5e-3;
     const double r = it.within("anode_diameter_mm", 1e-6, 1e5, "mm") * 0.5e-3;
@@ -67,14 +72,23 @@ std::vector<std::string> meanEn(const YamlInput& it, std::size_t i)
     const double n = numberDensity(p, tK);
     const double en = meanEOverN(v, r, r0, n) / townsend;
     fmt::print("  {}: <E/N> = {} Td (N = {} 1/m3)\n", label(it, i), num(en), num(n));
-    return {label(it, i), num(v / 1e3), num(2e3 * r0), num(2e3 * r), num(tK - 273.15), num(p / 1e3),
-            num(field(v, r0, r, r0) / 1e5), num(field(v, r, r, r0) / 1e5), num(n), num(en)};
+    return {label(it, i),
+            num(v / 1e3),
+            num(2e3 * r0),
+            num(2e3 * r),
+            num(tK - 273.15),
+            num(p / 1e3),
+            num(field(v, r0, r, r0) / 1e5),
+            num(field(v, r, r, r0) / 1e5),
+            num(n),
+            num(en)};
 }
 
 // Acetaldehyde paper eqs 1-2: psi and the residence-time corrected psi'.
 std::vector<std::string> removal(const YamlInput& it, std::size_t i)
 {
-    it.rejectUnknown({"label", "outlet_ppm_no_discharge", "outlet_ppm_discharge", "temperature_C", "reference_temperature_C"});
+    it.rejectUnknown({"label", "outlet_ppm_no_discharge", "outlet_ppm_discharge", "temperature_C",
+                      "reference_temperature_C"});
     const double c0 = it.within("outlet_ppm_no_discharge", 1e-12, 1e6, "ppm");
     const double c = it.within("outlet_ppm_discharge", 0, 1e6, "ppm");
     const double tK = kelvin(it, "temperature_C");
@@ -88,8 +102,8 @@ std::vector<std::string> removal(const YamlInput& it, std::size_t i)
 // Toluene paper eq 4: J = (q_in - q_out) / (I V) from molar flows.
 std::vector<std::string> energetic(const YamlInput& it, std::size_t i)
 {
-    it.rejectUnknown({"label", "inlet_ppm", "outlet_ppm", "gas_flow_m3_per_s", "temperature_C", "pressure_kPa", "current_mA",
-                      "voltage_kV"});
+    it.rejectUnknown({"label", "inlet_ppm", "outlet_ppm", "gas_flow_m3_per_s", "temperature_C",
+                      "pressure_kPa", "current_mA", "voltage_kV"});
     const double cin = it.within("inlet_ppm", 0, 1e6, "ppm");
     const double cout = it.within("outlet_ppm", 0, 1e6, "ppm");
     const double q = it.within("gas_flow_m3_per_s", 1e-12, 1e6, "m3/s");
@@ -125,15 +139,21 @@ void runSection(const YamlInput& in, const Section& s, const std::string& dir)
 }
 
 const std::vector<Section> sections = {
-    {"mean_en", "mean E/N (toluene paper eq 2)", "corona_mean_en.csv",
+    {"mean_en",
+     "mean E/N (toluene paper eq 2)",
+     "corona_mean_en.csv",
      {"label", "voltage_kV", "wire_diameter_mm", "anode_diameter_mm", "temperature_C", "pressure_kPa",
       "E_wire_kV_per_cm", "E_anode_kV_per_cm", "N_per_m3", "mean_E_over_N_Td"},
      meanEn},
-    {"removal", "removal efficiency (acetaldehyde paper eqs 1-2)", "corona_removal.csv",
-     {"label", "outlet_ppm_no_discharge", "outlet_ppm_discharge", "temperature_C", "reference_temperature_C", "psi",
-      "psi_prime"},
+    {"removal",
+     "removal efficiency (acetaldehyde paper eqs 1-2)",
+     "corona_removal.csv",
+     {"label", "outlet_ppm_no_discharge", "outlet_ppm_discharge", "temperature_C", "reference_temperature_C",
+      "psi", "psi_prime"},
      removal},
-    {"energetic", "energetic efficiency (toluene paper eq 4)", "corona_energetic.csv",
+    {"energetic",
+     "energetic efficiency (toluene paper eq 4)",
+     "corona_energetic.csv",
      {"label", "inlet_ppm", "outlet_ppm", "q_in_mol_per_s", "q_out_mol_per_s", "current_mA", "voltage_kV",
       "J_mol_per_J"},
      energetic},

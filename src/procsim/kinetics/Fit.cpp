@@ -18,7 +18,8 @@ namespace procsim::kinetics
 namespace
 {
 
-std::vector<std::vector<double>> predictAt(const FitDataset& d, const Overrides& values, const std::vector<double>& tOut)
+std::vector<std::vector<double>> predictAt(const FitDataset& d, const Overrides& values,
+                                           const std::vector<double>& tOut)
 {
     Overrides o = d.set;
     o.insert(o.end(), values.begin(), values.end());
@@ -84,20 +85,25 @@ struct Residuals
     }
 };
 
-std::string num(double v, int p = 6) { return formatNumber(v, p); }
+std::string num(double v, int p = 6)
+{
+    return formatNumber(v, p);
+}
 
-constexpr double maxConcentration = 1e6;   // mg/L: far above any solubility
+constexpr double maxConcentration = 1e6; // mg/L: far above any solubility
 
 } // namespace
 
-std::vector<std::vector<double>> predict(const FitDataset& d, const std::vector<FitParameter>& params, bool useEstimate)
+std::vector<std::vector<double>> predict(const FitDataset& d, const std::vector<FitParameter>& params,
+                                         bool useEstimate)
 {
     Overrides o;
     for (const auto& p : params) o.emplace_back(p.key, useEstimate ? p.estimate : p.initial);
     return predictAt(d, o, d.t);
 }
 
-FitResult fitParameters(std::vector<FitParameter> params, const std::vector<FitDataset>& data, const FitOptions& opt)
+FitResult fitParameters(std::vector<FitParameter> params, const std::vector<FitDataset>& data,
+                        const FitOptions& opt)
 {
     int m = 0;
     for (const auto& d : data)
@@ -105,12 +111,15 @@ FitResult fitParameters(std::vector<FitParameter> params, const std::vector<FitD
             for (double v : q) m += !std::isnan(v);
     const int p = static_cast<int>(params.size());
     if (p == 0) throw InputError("fit: no parameters to estimate");
-    if (m <= p) throw InputError("fit: " + std::to_string(m) + " data points cannot determine " + std::to_string(p) + " parameters");
+    if (m <= p)
+        throw InputError("fit: " + std::to_string(m) + " data points cannot determine " + std::to_string(p)
+                         + " parameters");
 
     std::vector<double> x(static_cast<std::size_t>(p));
     for (std::size_t i = 0; i < params.size(); ++i)
     {
-        if (!(params[i].initial > 0)) throw InputError("fit: parameter '" + params[i].key + "' needs a positive initial value");
+        if (!(params[i].initial > 0))
+            throw InputError("fit: parameter '" + params[i].key + "' needs a positive initial value");
         x[i] = std::log(params[i].initial);
     }
     {
@@ -119,7 +128,8 @@ FitResult fitParameters(std::vector<FitParameter> params, const std::vector<FitD
             throw InputError("fit: the residuals at the initial parameter values are not finite"
                              " (check the data, sigma_mg_per_L and the initial values)");
     }
-    auto* cost = new ceres::DynamicNumericDiffCostFunction<Residuals, ceres::CENTRAL>(new Residuals{&params, &data});
+    auto* cost =
+        new ceres::DynamicNumericDiffCostFunction<Residuals, ceres::CENTRAL>(new Residuals{&params, &data});
     cost->AddParameterBlock(p);
     cost->SetNumResiduals(m);
     ceres::Problem problem;
@@ -210,26 +220,30 @@ std::vector<FitParameter> readParameters(const YamlInput& in)
 }
 
 // The CSV's measured columns, <species>_mg_per_L or TOC_mgC_per_L, into d.
-void readMeasured(FitDataset& d, const CsvTable& table, std::size_t timeColumn, const Case& c, const std::string& csvFile)
+void readMeasured(FitDataset& d, const CsvTable& table, std::size_t timeColumn, const Case& c,
+                  const std::string& csvFile)
 {
     for (std::size_t col = 0; col < table.header.size(); ++col)
     {
         if (col == timeColumn) continue;
         const std::string h = table.header[col];
         std::string q;
-        if (h == "TOC_mgC_per_L") q = "TOC";
-        else if (h.size() > 9 && h.substr(h.size() - 9) == "_mg_per_L") q = h.substr(0, h.size() - 9);
+        if (h == "TOC_mgC_per_L")
+            q = "TOC";
+        else if (h.size() > 9 && h.substr(h.size() - 9) == "_mg_per_L")
+            q = h.substr(0, h.size() - 9);
         if (q.empty() || (q != "TOC" && !c.mech.hasSpecies(q)))
-            throw InputError(csvFile + ": column '" + h + "' is not time_h, TOC_mgC_per_L or <species>_mg_per_L of the mechanism");
+            throw InputError(csvFile + ": column '" + h
+                             + "' is not time_h, TOC_mgC_per_L or <species>_mg_per_L of the mechanism");
         d.quantities.push_back(q);
         std::vector<double> v;
         for (std::size_t r = 0; r < table.rows.size(); ++r)
         {
             const double x = table.rows[r][col];
-            if (!std::isnan(x) && !(std::fabs(x) <= maxConcentration))   // noise may dip below 0
+            if (!std::isnan(x) && !(std::fabs(x) <= maxConcentration)) // noise may dip below 0
                 throw InputError(csvFile + ": data row " + std::to_string(r + 1) + ": column '" + h
-                                 + "' expected a concentration from -" + num(maxConcentration) + " to " + num(maxConcentration)
-                                 + " mg/L (or nan: not measured), got " + num(x));
+                                 + "' expected a concentration from -" + num(maxConcentration) + " to "
+                                 + num(maxConcentration) + " mg/L (or nan: not measured), got " + num(x));
             v.push_back(x);
         }
         d.measured.push_back(v);
@@ -239,8 +253,9 @@ void readMeasured(FitDataset& d, const CsvTable& table, std::size_t timeColumn, 
     {
         const double t = table.rows[r][timeColumn];
         if (!(t >= 0 && t <= tMax))
-            throw InputError(csvFile + ": data row " + std::to_string(r + 1) + ": column 'time_h' expected a time from 0 to "
-                             + num(tMax) + " h (the case's duration), got " + num(t));
+            throw InputError(csvFile + ": data row " + std::to_string(r + 1)
+                             + ": column 'time_h' expected a time from 0 to " + num(tMax)
+                             + " h (the case's duration), got " + num(t));
         d.t.push_back(t * 3600.0);
     }
     if (d.quantities.empty()) throw InputError(csvFile + ": no measured columns");
@@ -265,12 +280,12 @@ FitDataset readDataset(const YamlInput& it, std::size_t index, const std::filesy
     }
     if (it.has("sigma_mg_per_L")) d.sigma = it.positive("sigma_mg_per_L", "mg/L");
     const std::string csvFile = rel(it.text("csv"));
-    const CsvTable table = readCsv(csvFile, true);   // "nan" or empty: not measured
-    const Case c = d.source.build(d.set);            // validates the set keys
+    const CsvTable table = readCsv(csvFile, true); // "nan" or empty: not measured
+    const Case c = d.source.build(d.set);          // validates the set keys
     readMeasured(d, table, table.column("time_h", csvFile), c, csvFile);
     Overrides o = d.set;
     for (const auto& p : params) o.emplace_back(p.key, p.initial);
-    d.source.build(o);   // the parameter keys exist
+    d.source.build(o); // the parameter keys exist
     return d;
 }
 

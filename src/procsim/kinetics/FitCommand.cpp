@@ -25,7 +25,7 @@ namespace
 struct FitArgs
 {
     std::string file;
-    std::string output;   // empty: <fit file name>_out
+    std::string output; // empty: <fit file name>_out
     bool noPlots = false;
 };
 
@@ -40,14 +40,19 @@ std::optional<FitArgs> parse(int argc, char** argv)
     return a;
 }
 
-std::string num(double v, int p = 6) { return formatNumber(v, p); }
+std::string num(double v, int p = 6)
+{
+    return formatNumber(v, p);
+}
 
 void writeParameters(const FitResult& r, const std::string& path)
 {
-    CsvWriter csv(path, {"key", "initial", "estimate", "std_error", "rel_std_error", "ci95_low", "ci95_high"});
+    CsvWriter csv(path,
+                  {"key", "initial", "estimate", "std_error", "rel_std_error", "ci95_low", "ci95_high"});
     for (const auto& p : r.parameters)
         csv.row(std::vector<std::string>{p.key, num(p.initial), num(p.estimate), num(p.stdError),
-                                         num(p.stdError / p.estimate), num(p.estimate * std::exp(-1.96 * p.lnStdError)),
+                                         num(p.stdError / p.estimate),
+                                         num(p.estimate * std::exp(-1.96 * p.lnStdError)),
                                          num(p.estimate * std::exp(1.96 * p.lnStdError))});
     csv.close();
 }
@@ -56,8 +61,8 @@ void writeResiduals(const FitResult& r, const std::string& path)
 {
     CsvWriter csv(path, {"dataset", "time_h", "quantity", "measured", "predicted", "residual"});
     for (const auto& e : r.residuals)
-        csv.row(std::vector<std::string>{e.dataset, num(e.t / 3600.0), e.quantity, num(e.measured), num(e.predicted),
-                                         num(e.measured - e.predicted)});
+        csv.row(std::vector<std::string>{e.dataset, num(e.t / 3600.0), e.quantity, num(e.measured),
+                                         num(e.predicted), num(e.measured - e.predicted)});
     csv.close();
 }
 
@@ -65,8 +70,10 @@ void writeResiduals(const FitResult& r, const std::string& path)
 // and as fit_summary.txt.
 std::string summary(const FitProblem& f, const FitResult& r)
 {
-    std::string os = fmt::format("fit {}: {} ({})\n", f.title, r.converged ? "converged" : "NOT converged", r.report);
-    os += fmt::format("  {:<28}{:<14}{:<14}{:<14}rel. error\n", "parameter", "initial", "estimate", "std error");
+    std::string os =
+        fmt::format("fit {}: {} ({})\n", f.title, r.converged ? "converged" : "NOT converged", r.report);
+    os += fmt::format("  {:<28}{:<14}{:<14}{:<14}rel. error\n", "parameter", "initial", "estimate",
+                      "std error");
     for (const auto& p : r.parameters)
         os += fmt::format("  {:<28}{:<14}{:<14}{:<14}{} %\n", p.key, num(p.initial, 4), num(p.estimate, 5),
                           num(p.stdError, 3), num(100 * p.stdError / p.estimate, 3));
@@ -74,12 +81,14 @@ std::string summary(const FitProblem& f, const FitResult& r)
     for (Eigen::Index i = 0; i < r.correlation.rows(); ++i)
     {
         os += "   ";
-        for (Eigen::Index j = 0; j < r.correlation.cols(); ++j) os += fmt::format("{:>8}", num(r.correlation(i, j), 3));
+        for (Eigen::Index j = 0; j < r.correlation.cols(); ++j)
+            os += fmt::format("{:>8}", num(r.correlation(i, j), 3));
         os += '\n';
     }
-    os += fmt::format("  points {}, RMSE {} mg/L, R^2 {}, chi2 {}{}\n", r.points, num(r.rmse, 4), num(r.r2, 5),
-                      num(r.chi2, 5),
-                      f.options.scaleByResidualVariance ? " (errors scaled by chi2/(n-p))" : " (errors from the given sigma)");
+    os += fmt::format("  points {}, RMSE {} mg/L, R^2 {}, chi2 {}{}\n", r.points, num(r.rmse, 4),
+                      num(r.r2, 5), num(r.chi2, 5),
+                      f.options.scaleByResidualVariance ? " (errors scaled by chi2/(n-p))"
+                                                        : " (errors from the given sigma)");
     return os;
 }
 
@@ -112,15 +121,17 @@ void plotDataset(const FitDataset& d, const FitResult& r, std::size_t k, const s
     writeSeries(data, d, d.t, d.measured);
     std::string names;
     for (const auto& q : d.quantities) names += q + " ";
-    plotPng(dir + "/fit_" + n + ".png", texts::plots::fit_curves,
-            PlotVariables().set("curve", curve).set("data", data).set("names", names).set("title_text", d.name));
+    plotPng(
+        dir + "/fit_" + n + ".png", texts::plots::fit_curves,
+        PlotVariables().set("curve", curve).set("data", data).set("names", names).set("title_text", d.name));
 }
 
 void plot(const FitProblem& f, const FitResult& r, const std::string& dir)
 {
     for (std::size_t k = 0; k < f.data.size(); ++k) plotDataset(f.data[k], r, k, dir);
     const std::string res = dir + "/fit_residuals.csv";
-    plotPng(dir + "/fit_parity.png", texts::plots::fit_parity, PlotVariables().set("csv", res).set("r2_text", num(r.r2, 4)));
+    plotPng(dir + "/fit_parity.png", texts::plots::fit_parity,
+            PlotVariables().set("csv", res).set("r2_text", num(r.r2, 4)));
     plotPng(dir + "/fit_residuals.png", texts::plots::fit_residuals, PlotVariables().set("csv", res));
 }
 

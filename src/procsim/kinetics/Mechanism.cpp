@@ -26,7 +26,8 @@ std::pair<double, std::string> parseTerm(const std::string& raw, const YamlInput
     }
     is >> name;
     std::string rest;
-    if (name.empty() || (is >> rest)) throw where.error("equation", "terms like 'A', '2 CO2' separated by ' + '");
+    if (name.empty() || (is >> rest))
+        throw where.error("equation", "terms like 'A', '2 CO2' separated by ' + '");
     return {coef, name};
 }
 
@@ -121,8 +122,7 @@ Mechanism Mechanism::fromYaml(const YamlInput& root)
         if (arrow == std::string::npos) throw r.error("equation", "'A + B -> C' (with '->')");
         for (int side = 0; side < 2; ++side)
         {
-            const std::string text =
-                side == 0 ? x.equation.substr(0, arrow) : x.equation.substr(arrow + 2);
+            const std::string text = side == 0 ? x.equation.substr(0, arrow) : x.equation.substr(arrow + 2);
             for (const auto& term : splitPlus(" " + text + " "))
             {
                 const auto [coef, name] = parseTerm(term, r);
@@ -143,12 +143,13 @@ Mechanism Mechanism::fromYaml(const YamlInput& root)
         x.order = static_cast<int>(std::round(order));
         x.k = r.number("k", rateUnit(x.order));
         if (!(x.k >= 0 && x.k <= maxRateConstant))
-            throw r.error("k", "a rate constant >= 0 [" + rateUnit(x.order) + "] up to " + formatNumber(maxRateConstant));
+            throw r.error("k", "a rate constant >= 0 [" + rateUnit(x.order) + "] up to "
+                                   + formatNumber(maxRateConstant));
         const std::string unit = r.text("units");
         if (orderOfRateUnit(unit) != x.order)
         {
-            throw r.error("units", "'" + rateUnit(x.order) + "' for a reaction of order "
-                                       + std::to_string(x.order));
+            throw r.error("units",
+                          "'" + rateUnit(x.order) + "' for a reaction of order " + std::to_string(x.order));
         }
         if (checkCarbon)
         {

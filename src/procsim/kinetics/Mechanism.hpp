@@ -18,9 +18,9 @@ struct Species
 {
     std::string name;
     std::string description;
-    double molarMass = 0;   // g/mol
-    double carbon = 0;      // carbon atoms per molecule
-    bool organic = true;    // counted in TOC (false for CO2)
+    double molarMass = 0; // g/mol
+    double carbon = 0;    // carbon atoms per molecule
+    bool organic = true;  // counted in TOC (false for CO2)
 };
 
 struct Term
@@ -35,8 +35,8 @@ struct Reaction
     std::string equation;
     std::vector<Term> reactants;
     std::vector<Term> products;
-    double k = 0;           // (L/mol)^(order-1) / s
-    int order = 0;          // sum of reactant stoichiometric coefficients
+    double k = 0;  // (L/mol)^(order-1) / s
+    int order = 0; // sum of reactant stoichiometric coefficients
 };
 
 class Mechanism
@@ -49,12 +49,12 @@ public:
     std::string file;
     std::vector<Species> species;
     std::vector<Reaction> reactions;
-    std::string radical;              // species whose concentration the [OH] model sets ("" = none)
+    std::string radical; // species whose concentration the [OH] model sets ("" = none)
 
     // index of a species; throws InputError naming `where` if unknown
     std::size_t index(const std::string& name, const std::string& where) const;
     bool hasSpecies(const std::string& name) const;
-    std::size_t reaction(const std::string& id) const;   // npos if unknown
+    std::size_t reaction(const std::string& id) const; // npos if unknown
     bool hasRadical() const { return !radical.empty(); }
     std::size_t radicalIndex() const;
 };

@@ -24,13 +24,15 @@ Model::Model(const Case& c) : case_(c)
     }
     const auto f = c.feedRate();
     feed_ = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(stateSpecies_.size()));
-    for (std::size_t s = 0; s < stateSpecies_.size(); ++s) feed_[static_cast<Eigen::Index>(s)] = f[stateSpecies_[s]];
+    for (std::size_t s = 0; s < stateSpecies_.size(); ++s)
+        feed_[static_cast<Eigen::Index>(s)] = f[stateSpecies_[s]];
 }
 
 Eigen::VectorXd Model::initialState() const
 {
     Eigen::VectorXd y(static_cast<Eigen::Index>(size()));
-    for (std::size_t s = 0; s < size(); ++s) y[static_cast<Eigen::Index>(s)] = case_.initial[stateSpecies_[s]];
+    for (std::size_t s = 0; s < size(); ++s)
+        y[static_cast<Eigen::Index>(s)] = case_.initial[stateSpecies_[s]];
     return y;
 }
 
@@ -77,8 +79,10 @@ void Model::jacobian(const Eigen::VectorXd& y, Eigen::MatrixXd& jac) const
                 const auto& t = r.reactants[b];
                 const long s = stateOf_[t.species];
                 const double c = s < 0 ? fixed_[t.species] : y[s];
-                if (b == a) d *= t.stoich * (t.stoich == 1.0 ? 1.0 : std::pow(c, t.stoich - 1.0));
-                else d *= t.stoich == 1.0 ? c : std::pow(c, t.stoich);
+                if (b == a)
+                    d *= t.stoich * (t.stoich == 1.0 ? 1.0 : std::pow(c, t.stoich - 1.0));
+                else
+                    d *= t.stoich == 1.0 ? c : std::pow(c, t.stoich);
             }
             for (const auto& t : r.reactants)
                 if (stateOf_[t.species] >= 0) jac(stateOf_[t.species], j) -= t.stoich * d;
@@ -103,8 +107,8 @@ bool Model::isLinear() const
 void Model::linearForm(Eigen::MatrixXd& a, Eigen::VectorXd& b) const
 {
     const Eigen::VectorXd zero = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(size()));
-    jacobian(zero, a);   // exact for a linear system: rates are k * fixed * y_j
-    rhs(zero, b);        // feed plus zero-order production
+    jacobian(zero, a); // exact for a linear system: rates are k * fixed * y_j
+    rhs(zero, b);      // feed plus zero-order production
 }
 
 Eigen::VectorXd Model::allSpecies(const Eigen::VectorXd& y) const

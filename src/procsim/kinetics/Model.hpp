@@ -36,9 +36,9 @@ public:
 private:
     Case case_;
     std::vector<std::size_t> stateSpecies_;
-    std::vector<long> stateOf_;        // species -> state index or -1 (fixed)
-    std::vector<double> fixed_;        // species -> fixed concentration (mol/L)
-    Eigen::VectorXd feed_;             // per state, mol/(L s)
+    std::vector<long> stateOf_; // species -> state index or -1 (fixed)
+    std::vector<double> fixed_; // species -> fixed concentration (mol/L)
+    Eigen::VectorXd feed_;      // per state, mol/(L s)
 
     double rate(const Reaction& r, const Eigen::VectorXd& y) const;
 };

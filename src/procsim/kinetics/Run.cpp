@@ -26,16 +26,20 @@ double interpolate(const std::vector<double>& t, const std::vector<double>& v, d
     return v[i - 1] + w * (v[i] - v[i - 1]);
 }
 
-std::string num(double v, int prec = 4) { return formatNumber(v, prec); }
+std::string num(double v, int prec = 4)
+{
+    return formatNumber(v, prec);
+}
 
 } // namespace
 
 double Results::tocNoDischarge(std::size_t i) const
 {
-    double organicFed = 0;   // mol C fed as organic species
+    double organicFed = 0; // mol C fed as organic species
     const auto feed = cas.feedRate();
     for (std::size_t s = 0; s < feed.size(); ++s)
-        if (cas.mech.species[s].organic) organicFed += feed[s] * cas.mech.species[s].carbon * cas.volume * t[i];
+        if (cas.mech.species[s].organic)
+            organicFed += feed[s] * cas.mech.species[s].carbon * cas.volume * t[i];
     return toc.front() + organicFed / cas.volume * carbonMolarMass * 1000.0;
 }
 
@@ -62,7 +66,7 @@ Results analyse(const Model& model, const Trajectory& tr)
     r.steps = tr.steps;
     const auto& sp = r.cas.mech.species;
     const auto feed = r.cas.feedRate();
-    double feedCarbon = 0;   // mol C / s into the liquid
+    double feedCarbon = 0; // mol C / s into the liquid
     for (std::size_t s = 0; s < sp.size(); ++s) feedCarbon += feed[s] * sp[s].carbon * r.cas.volume;
     for (std::size_t i = 0; i < tr.t.size(); ++i)
     {
@@ -82,8 +86,10 @@ Results analyse(const Model& model, const Trajectory& tr)
         r.toc.push_back(organic / r.cas.volume * carbonMolarMass * 1000.0);
         r.inorganicCarbon.push_back(inorganic);
         r.carbonFed.push_back(feedCarbon * tr.t[i]);
-        if (i == 0) r.carbonInitial.push_back(organic + inorganic);
-        else r.carbonInitial.push_back(r.carbonInitial.front());
+        if (i == 0)
+            r.carbonInitial.push_back(organic + inorganic);
+        else
+            r.carbonInitial.push_back(r.carbonInitial.front());
         const double in = r.carbonInitial.back() + r.carbonFed.back();
         const double out = organic + inorganic;
         r.carbonError.push_back(in > 0 ? std::fabs(in - out) / in : std::fabs(out));
@@ -119,7 +125,7 @@ Efficiency efficiency(const Results& r)
             break;
         }
     }
-    const double power = r.cas.current * r.cas.voltage;   // mA * kV = W
+    const double power = r.cas.current * r.cas.voltage; // mA * kV = W
     const auto feed = r.cas.feedRate();
     for (std::size_t s = 0; s < sp.size(); ++s)
     {
@@ -198,12 +204,13 @@ std::string efficiencyLine(const Results& r, const Efficiency& e)
 std::string summaryText(const Results& r, const Efficiency& e)
 {
     const Case& c = r.cas;
-    std::string os = fmt::format("case {} ({}), mechanism {}, solver {} ({} steps)\n", c.title, c.file, c.mech.name,
-                                 c.solver.method, r.steps);
+    std::string os = fmt::format("case {} ({}), mechanism {}, solver {} ({} steps)\n", c.title, c.file,
+                                 c.mech.name, c.solver.method, r.steps);
     if (c.radicalFixed())
-        os += fmt::format("  [{}] = {} mg/L = {} mol/L ({}, I = {} mA)\n", c.mech.radical,
-                          num(c.radicalConcentration() * 1000.0 * c.mech.species[c.mech.radicalIndex()].molarMass),
-                          num(c.radicalConcentration()), c.oh.kind, formatNumber(c.current));
+        os += fmt::format(
+            "  [{}] = {} mg/L = {} mol/L ({}, I = {} mA)\n", c.mech.radical,
+            num(c.radicalConcentration() * 1000.0 * c.mech.species[c.mech.radicalIndex()].molarMass),
+            num(c.radicalConcentration()), c.oh.kind, formatNumber(c.current));
     os += valuesTable(r);
     if (e.halfReached)
         os += "  TOC half time (TOC = 1/2 TOC without discharge): " + num(e.tHalf / 3600.0) + " h\n";
@@ -211,11 +218,12 @@ std::string summaryText(const Results& r, const Efficiency& e)
         os += "  TOC half time: not reached within " + num(r.t.back() / 3600.0) + " h\n";
     if (c.voltage > 0) os += efficiencyLine(r, e);
     const std::size_t last = r.t.size() - 1;
-    os += fmt::format("  carbon: initial {} mmol + fed {} mmol = in solution {} mmol + CO2 {} mmol; max relative "
-                      "imbalance {}\n",
-                      num(r.carbonInitial[last] * 1e3, 6), num(r.carbonFed[last] * 1e3, 6),
-                      num(r.toc[last] / carbonMolarMass / 1000.0 * c.volume * 1e3, 6),
-                      num(r.inorganicCarbon[last] * 1e3, 6), num(maxCarbonError(r), 3));
+    os += fmt::format(
+        "  carbon: initial {} mmol + fed {} mmol = in solution {} mmol + CO2 {} mmol; max relative "
+        "imbalance {}\n",
+        num(r.carbonInitial[last] * 1e3, 6), num(r.carbonFed[last] * 1e3, 6),
+        num(r.toc[last] / carbonMolarMass / 1000.0 * c.volume * 1e3, 6),
+        num(r.inorganicCarbon[last] * 1e3, 6), num(maxCarbonError(r), 3));
     return os;
 }
 
@@ -235,9 +243,11 @@ void writeTimeseries(const Results& r, const std::string& path)
     for (std::size_t i = 0; i < r.t.size(); ++i)
     {
         std::vector<double> row = {r.t[i] / 3600.0, r.t[i]};
-        for (std::size_t s = 0; s < sp.size(); ++s) row.push_back(r.c[i][static_cast<Eigen::Index>(s)] * sp[s].molarMass * 1000.0);
+        for (std::size_t s = 0; s < sp.size(); ++s)
+            row.push_back(r.c[i][static_cast<Eigen::Index>(s)] * sp[s].molarMass * 1000.0);
         for (std::size_t s = 0; s < sp.size(); ++s) row.push_back(r.c[i][static_cast<Eigen::Index>(s)]);
-        row.insert(row.end(), {r.toc[i], r.tocNoDischarge(i), r.inorganicCarbon[i], r.carbonFed[i], r.carbonError[i]});
+        row.insert(row.end(),
+                   {r.toc[i], r.tocNoDischarge(i), r.inorganicCarbon[i], r.carbonFed[i], r.carbonError[i]});
         csv.row(row);
     }
     csv.close();
@@ -277,9 +287,15 @@ void plotRun(const Results& r, const std::string& dir)
         columns += std::to_string(3 + r.cas.mech.index(n, "plot")) + " ";
     }
     plotPng(dir + "/species.png", texts::plots::species,
-            PlotVariables().set("csv", csv).set("title_text", r.cas.title).set("names", names).set("columns", columns));
+            PlotVariables()
+                .set("csv", csv)
+                .set("title_text", r.cas.title)
+                .set("names", names)
+                .set("columns", columns));
     plotPng(dir + "/toc.png", texts::plots::toc,
-            PlotVariables().set("csv", csv).set("title_text", r.cas.title)
+            PlotVariables()
+                .set("csv", csv)
+                .set("title_text", r.cas.title)
                 .set("toc", double(3 + 2 * r.cas.mech.species.size())));
 }
 

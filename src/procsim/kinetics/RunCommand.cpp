@@ -24,10 +24,10 @@ namespace
 struct RunArgs
 {
     std::string file;
-    std::string output;   // empty: <case name>_out
+    std::string output; // empty: <case name>_out
     Overrides set;
     std::vector<SweepDim> sweeps;
-    std::string solver;   // empty: the case's
+    std::string solver; // empty: the case's
     bool noPlots = false, quiet = false, noSweep = false;
 };
 
@@ -61,7 +61,8 @@ void printSweep(const std::vector<SweepRun>& runs, const std::vector<SweepDim>& 
     const double tEnd = r0.cas.reportTimes.empty() ? r0.t.back() : r0.cas.reportTimes.back();
     auto names = plotSpecies(r0);
     names.push_back("TOC");
-    fmt::print("sweep of {}: values at {} h (mg/L; TOC mg C/L)\n ", r0.cas.title, formatNumber(tEnd / 3600.0));
+    fmt::print("sweep of {}: values at {} h (mg/L; TOC mg C/L)\n ", r0.cas.title,
+               formatNumber(tEnd / 3600.0));
     for (const auto& d : sweeps) fmt::print("{:>16}", shortKey(d.key));
     for (const auto& n : names) fmt::print("{:>10}", n);
     fmt::print("{:>10}\n", "t_1/2 h");
@@ -89,8 +90,9 @@ Overrides parseSetOptions(const std::vector<std::string>& words, const std::stri
     Overrides set;
     for (const auto& w : words)
     {
-        const SweepDim d = parseSweep(w);   // KEY=VALUE is a sweep of one value
-        if (d.values.size() != 1) throw InputError(command + ": option --set expected KEY=VALUE (one value), got '" + w + "'");
+        const SweepDim d = parseSweep(w); // KEY=VALUE is a sweep of one value
+        if (d.values.size() != 1)
+            throw InputError(command + ": option --set expected KEY=VALUE (one value), got '" + w + "'");
         set.emplace_back(d.key, d.values[0]);
     }
     rejectDuplicates(set, &Override::first, command, "--set key");

@@ -23,9 +23,9 @@ namespace
 struct SensitivityArgs
 {
     std::string file;
-    std::string output;   // empty: <case name>_sensitivity
+    std::string output; // empty: <case name>_sensitivity
     Overrides set;
-    std::string params, outputs;          // comma-separated; empty: the case's or the defaults
+    std::string params, outputs; // comma-separated; empty: the case's or the defaults
     std::optional<double> timeH, changePercent;
 };
 
@@ -35,8 +35,10 @@ std::vector<std::string> splitCommas(const std::string& s)
     std::string cur;
     for (char ch : s + ",")
     {
-        if (ch != ',') cur += ch;
-        else if (!cur.empty()) out.push_back(cur), cur.clear();
+        if (ch != ',')
+            cur += ch;
+        else if (!cur.empty())
+            out.push_back(cur), cur.clear();
     }
     return out;
 }
@@ -56,7 +58,8 @@ std::optional<SensitivityArgs> parse(int argc, char** argv)
     if (!cl.parse(argc, argv)) return std::nullopt;
     if (a.timeH && !(*a.timeH > 0)) throw cl.refuse("--time-h", "a time above 0 [h]", formatNumber(*a.timeH));
     if (a.changePercent && !(*a.changePercent > 0 && *a.changePercent < 100))
-        throw cl.refuse("--change-percent", "a number above 0 and below 100 [%]", formatNumber(*a.changePercent));
+        throw cl.refuse("--change-percent", "a number above 0 and below 100 [%]",
+                        formatNumber(*a.changePercent));
     a.set = parseSetOptions(sets, cl.command());
     return a;
 }
@@ -71,8 +74,9 @@ int sensitivityCommand(int argc, char** argv)
     // 0: not given, the case's value or the default
     const auto rows = sensitivity(src, args->set, splitCommas(args->params), splitCommas(args->outputs),
                                   args->timeH.value_or(0) * 3600.0, args->changePercent.value_or(0) / 100.0);
-    const std::string dir =
-        args->output.empty() ? std::filesystem::path(src.file()).stem().string() + "_sensitivity" : args->output;
+    const std::string dir = args->output.empty()
+                                ? std::filesystem::path(src.file()).stem().string() + "_sensitivity"
+                                : args->output;
     writeSensitivity(rows, dir);
     fmt::print("{}  output: {}/sensitivity.csv\n", sensitivityTable(rows), dir);
     return 0;

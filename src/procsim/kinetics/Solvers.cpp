@@ -9,7 +9,6 @@
 #include "common/Checked.hpp"
 #include "common/Csv.hpp"
 
-
 namespace procsim::kinetics
 {
 
@@ -55,7 +54,7 @@ Trajectory solveExpm(const Model& model, const std::vector<double>& times)
     z[n] = 1.0;
     tr.t.push_back(times.front());
     tr.y.push_back(z.head(n));
-    std::map<double, Eigen::MatrixXd> cache;   // propagator per interval length
+    std::map<double, Eigen::MatrixXd> cache; // propagator per interval length
     for (std::size_t i = 1; i < times.size(); ++i)
     {
         const double dt = times[i] - times[i - 1];
@@ -72,7 +71,8 @@ Trajectory solveExpm(const Model& model, const std::vector<double>& times)
 
 Trajectory solveRk4(const Model& model, const std::vector<double>& times, double step)
 {
-    stepCount(times.back() - times.front(), step, 100000000L, model.caseData().file + ": key 'solver.rk4_step_s'",
+    stepCount(times.back() - times.front(), step, 100000000L,
+              model.caseData().file + ": key 'solver.rk4_step_s'",
               "rk4 with a step of " + formatNumber(step) + " s", "use a longer step or solver cvode");
     Trajectory tr;
     Eigen::VectorXd y = model.initialState();
@@ -141,7 +141,7 @@ Trajectory solveCvode(const Model& model, const std::vector<double>& times, doub
     for (sunindextype i = 0; i < n; ++i) NV_Ith_S(r.y, i) = y0[i];
     r.mem = CVodeCreate(CV_BDF, r.ctx);
     if (!r.mem) throw std::runtime_error("CVodeCreate failed");
-    CVodeSetErrFile(r.mem, nullptr);   // failures are reported as one line by checkCvode
+    CVodeSetErrFile(r.mem, nullptr); // failures are reported as one line by checkCvode
     checkCvode(CVodeInit(r.mem, cvRhs, times.front(), r.y), "CVodeInit");
     checkCvode(CVodeSStolerances(r.mem, rtol, atol), "CVodeSStolerances");
     checkCvode(CVodeSetUserData(r.mem, const_cast<Model*>(&model)), "CVodeSetUserData");

@@ -17,9 +17,9 @@ namespace procsim::kinetics
 
 struct Trajectory
 {
-    std::vector<double> t;               // s
-    std::vector<Eigen::VectorXd> y;      // state at each t (mol/L)
-    long steps = 0;                      // integrator steps taken
+    std::vector<double> t;          // s
+    std::vector<Eigen::VectorXd> y; // state at each t (mol/L)
+    long steps = 0;                 // integrator steps taken
 };
 
 // times must start at 0 and increase

@@ -17,7 +17,10 @@ namespace procsim::kinetics
 namespace
 {
 
-std::string num(double v) { return formatNumber(v); }
+std::string num(double v)
+{
+    return formatNumber(v);
+}
 
 // Every combination of the swept values (cartesian product, last key fastest).
 std::vector<Overrides> combinations(const std::vector<SweepDim>& dims)
@@ -40,7 +43,8 @@ std::vector<Overrides> combinations(const std::vector<SweepDim>& dims)
 
 // sweep_summary.csv: swept values, outputs at report times, efficiencies.
 void writeSweepSummary(const std::vector<SweepRun>& runs, const std::vector<SweepDim>& dims,
-                       const std::vector<double>& times, const std::vector<std::string>& names, const std::string& path)
+                       const std::vector<double>& times, const std::vector<std::string>& names,
+                       const std::string& path)
 {
     std::vector<std::string> header;
     for (const auto& d : dims) header.push_back(shortKey(d.key));
@@ -64,16 +68,21 @@ void writeSweepSummary(const std::vector<SweepRun>& runs, const std::vector<Swee
 }
 
 // family_<quantity>.png: each quantity over time, one curve per member.
-void plotFamilies(const std::vector<SweepRun>& runs, const std::vector<std::string>& names, const std::string& dir)
+void plotFamilies(const std::vector<SweepRun>& runs, const std::vector<std::string>& names,
+                  const std::string& dir)
 {
     const Results& first = runs.front().results;
     std::string labels;
     for (const auto& run : runs) labels += run.label + " ";
     for (const auto& n : names)
     {
-        const std::size_t col = n == "TOC" ? 3 + 2 * first.cas.mech.species.size() : 3 + first.cas.mech.index(n, "plot");
+        const std::size_t col =
+            n == "TOC" ? 3 + 2 * first.cas.mech.species.size() : 3 + first.cas.mech.index(n, "plot");
         plotPng(dir + "/family_" + n + ".png", texts::plots::family,
-                PlotVariables().set("dir", dir).set("labels", labels).set("col", double(col))
+                PlotVariables()
+                    .set("dir", dir)
+                    .set("labels", labels)
+                    .set("col", double(col))
                     .set("ylabel_text", n + (n == "TOC" ? " (mg C/L)" : " (mg/L)"))
                     .set("title_text", first.cas.title + ": " + n));
     }
@@ -93,10 +102,15 @@ void plotSweeps(const std::vector<SweepDim>& dims, const std::vector<double>& ti
         {
             const std::string at = num(times[it] / 3600.0);
             plotPng(dir + "/sweep_" + names[q] + "_at_" + at + "h.png", texts::plots::sweep,
-                    PlotVariables().set("csv", dir + "/sweep_summary.csv").set("xcol", double(nd))
+                    PlotVariables()
+                        .set("csv", dir + "/sweep_summary.csv")
+                        .set("xcol", double(nd))
                         .set("col", double(nd + 1 + it * names.size() + q))
-                        .set("xlabel_text", shortKey(dims.back().key)).set("ylabel_text", names[q] + " at " + at + " h")
-                        .set("title_text", title).set("key0", shortKey(dims.front().key)).set("values0", values0));
+                        .set("xlabel_text", shortKey(dims.back().key))
+                        .set("ylabel_text", names[q] + " at " + at + " h")
+                        .set("title_text", title)
+                        .set("key0", shortKey(dims.front().key))
+                        .set("values0", values0));
         }
 }
 
@@ -112,8 +126,8 @@ std::string shortKey(const std::string& key)
     return last;
 }
 
-std::vector<SweepRun> runSweep(const CaseSource& src, const Overrides& set, const std::vector<SweepDim>& dims, const std::string& dir,
-                               bool plots, bool quiet, const std::string& solver)
+std::vector<SweepRun> runSweep(const CaseSource& src, const Overrides& set, const std::vector<SweepDim>& dims,
+                               const std::string& dir, bool plots, bool quiet, const std::string& solver)
 {
     const std::vector<Overrides> combos = combinations(dims);
     // every member is built (validated) and solved before anything is written
@@ -156,8 +170,9 @@ std::vector<SweepRun> runSweep(const CaseSource& src, const Overrides& set, cons
     return runs;
 }
 
-std::vector<SensitivityRow> sensitivity(const CaseSource& src, const Overrides& set, std::vector<std::string> parameters,
-                                        std::vector<std::string> outputs, double time, double change)
+std::vector<SensitivityRow> sensitivity(const CaseSource& src, const Overrides& set,
+                                        std::vector<std::string> parameters, std::vector<std::string> outputs,
+                                        double time, double change)
 {
     const Case base = src.build(set);
     if (parameters.empty()) parameters = base.sensParameters;
@@ -183,7 +198,8 @@ std::vector<SensitivityRow> sensitivity(const CaseSource& src, const Overrides& 
     for (const auto& p : parameters)
     {
         const std::size_t ri = base.mech.reaction(p);
-        if (ri == std::string::npos) throw InputError(base.mech.file + ": no reaction with id '" + p + "' (sensitivity parameter)");
+        if (ri == std::string::npos)
+            throw InputError(base.mech.file + ": no reaction with id '" + p + "' (sensitivity parameter)");
         for (double sign : {+1.0, -1.0})
         {
             Overrides o = set;
@@ -205,7 +221,7 @@ std::vector<SensitivityRow> sensitivity(const CaseSource& src, const Overrides& 
                 row.maxDeviationTime = 0;
                 for (std::size_t i = 0; i < s0.size() && r0.t[i] <= time * (1 + 1e-12); ++i)
                 {
-                    if (std::fabs(s0[i]) < 1e-3 * peak) continue;   // skip near-zero values
+                    if (std::fabs(s0[i]) < 1e-3 * peak) continue; // skip near-zero values
                     const double d = (s1[i] - s0[i]) / s0[i];
                     if (std::fabs(d) > std::fabs(row.maxDeviation))
                     {
@@ -222,8 +238,9 @@ std::vector<SensitivityRow> sensitivity(const CaseSource& src, const Overrides& 
 
 std::string sensitivityTable(const std::vector<SensitivityRow>& rows)
 {
-    std::string os = "deviation (%) of each output when one rate constant changes (at the chosen time; [largest over "
-                     "the run])\n";
+    std::string os =
+        "deviation (%) of each output when one rate constant changes (at the chosen time; [largest over "
+        "the run])\n";
     os += fmt::format("{:>8}{:>8}", "param", "change");
     std::vector<std::string> outs;
     for (const auto& r : rows)
@@ -247,11 +264,13 @@ std::string sensitivityTable(const std::vector<SensitivityRow>& rows)
 void writeSensitivity(const std::vector<SensitivityRow>& rows, const std::string& dir)
 {
     createOutputDirectory(dir);
-    CsvWriter csv(dir + "/sensitivity.csv", {"parameter", "change_percent", "output", "base_value", "perturbed_value",
-                                             "deviation_percent", "max_deviation_percent", "max_deviation_time_h"});
+    CsvWriter csv(dir + "/sensitivity.csv",
+                  {"parameter", "change_percent", "output", "base_value", "perturbed_value",
+                   "deviation_percent", "max_deviation_percent", "max_deviation_time_h"});
     for (const auto& r : rows)
-        csv.row(std::vector<std::string>{r.parameter, num(r.change * 100), r.output, num(r.base), num(r.perturbed),
-                                         num(r.deviation * 100), num(r.maxDeviation * 100), num(r.maxDeviationTime / 3600.0)});
+        csv.row(std::vector<std::string>{r.parameter, num(r.change * 100), r.output, num(r.base),
+                                         num(r.perturbed), num(r.deviation * 100), num(r.maxDeviation * 100),
+                                         num(r.maxDeviationTime / 3600.0)});
     csv.close();
 }
 

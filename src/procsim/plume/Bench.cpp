@@ -41,7 +41,8 @@ double exact(double x, double z)
         {
             const double xs = XS + 0.5 * B * gp[a], z0 = ZS + 0.5 * B * gp[c], w = gw[a] * gw[c] / 4;
             for (int n = -3; n <= 3; ++n)
-                s += w * (lineSource(x - xs, z - (2 * n * H + z0)) + lineSource(x - xs, z - (2 * n * H - z0)));
+                s +=
+                    w * (lineSource(x - xs, z - (2 * n * H + z0)) + lineSource(x - xs, z - (2 * n * H - z0)));
         }
     return s;
 }
@@ -61,8 +62,9 @@ struct Score
 
 int usage()
 {
-    std::cerr << "usage: plumeBench [--h H] [--dt DT] [--t-end T] [--scheme limited_quick|quick|upwind] [--write FILE]\n"
-                 "       plumeBench --evaluate FILE\n";
+    std::cerr
+        << "usage: plumeBench [--h H] [--dt DT] [--t-end T] [--scheme limited_quick|quick|upwind] [--write FILE]\n"
+           "       plumeBench --evaluate FILE\n";
     return 2;
 }
 
@@ -77,17 +79,25 @@ int main(int argc, char** argv)
     {
         const std::string arg = argv[a];
         if (a + 1 >= argc && arg != "-h" && arg != "--help") return usage();
-        if (arg == "--h") h = std::stod(argv[++a]);
-        else if (arg == "--dt") dt = std::stod(argv[++a]);
-        else if (arg == "--t-end") tEnd = std::stod(argv[++a]);
-        else if (arg == "--write") write = argv[++a];
-        else if (arg == "--evaluate") evaluate = argv[++a];
+        if (arg == "--h")
+            h = std::stod(argv[++a]);
+        else if (arg == "--dt")
+            dt = std::stod(argv[++a]);
+        else if (arg == "--t-end")
+            tEnd = std::stod(argv[++a]);
+        else if (arg == "--write")
+            write = argv[++a];
+        else if (arg == "--evaluate")
+            evaluate = argv[++a];
         else if (arg == "--scheme")
         {
             const std::string s = argv[++a];
-            scheme = s == "quick" ? Advection::Quick : s == "upwind" ? Advection::Upwind : Advection::LimitedQuick;
+            scheme = s == "quick"    ? Advection::Quick
+                     : s == "upwind" ? Advection::Upwind
+                                     : Advection::LimitedQuick;
         }
-        else return usage();
+        else
+            return usage();
     }
     if (!evaluate.empty())
     {
@@ -108,7 +118,8 @@ int main(int argc, char** argv)
         std::printf("evaluated %ld cells: relative L2 error %.4e\n", n, s.error());
         return 0;
     }
-    const int nx = static_cast<int>(std::lround((XMAX - XMIN) / h)), nz = static_cast<int>(std::lround(H / h));
+    const int nx = static_cast<int>(std::lround((XMAX - XMIN) / h)),
+              nz = static_cast<int>(std::lround(H / h));
     TerrainGrid g = TerrainGrid::box(nx, 1, nz, XMIN, 0.0, h, 1.0, H);
     WindModel wind(g, 0.0, 10.0);
     Transport t(g, K, K, scheme);
@@ -145,11 +156,13 @@ int main(int argc, char** argv)
         std::ostream& out = file.out();
         out.precision(12);
         for (int k = 0; k < nz; ++k)
-            for (int i = 0; i < nx; ++i) out << g.xc(i) << ' ' << g.zc(i, 0, k) << ' ' << t.c[g.idx(i, 0, k)] << '\n';
+            for (int i = 0; i < nx; ++i)
+                out << g.xc(i) << ' ' << g.zc(i, 0, k) << ' ' << t.c[g.idx(i, 0, k)] << '\n';
         file.close();
     }
     std::printf("grid %d x %d (h = %g), %ld steps of %.6g s (limit %.6g s), wall %.3f s, "
                 "%.1f million cell-updates/s, relative L2 error %.4e\n",
-                nx, nz, h, steps, dt, limit, wall, static_cast<double>(nx) * nz * steps / wall / 1e6, s.error());
+                nx, nz, h, steps, dt, limit, wall, static_cast<double>(nx) * nz * steps / wall / 1e6,
+                s.error());
     return 0;
 }

@@ -6,8 +6,8 @@
 namespace procsim::plume
 {
 
-int eulerianCommand(int argc, char** argv);     // EulerianCommand.cpp
-int gaussianCommand(int argc, char** argv);     // GaussianCommand.cpp
-int monteCarloCommand(int argc, char** argv);   // MonteCarloCommand.cpp
+int eulerianCommand(int argc, char** argv);   // EulerianCommand.cpp
+int gaussianCommand(int argc, char** argv);   // GaussianCommand.cpp
+int monteCarloCommand(int argc, char** argv); // MonteCarloCommand.cpp
 
 } // namespace procsim::plume

@@ -20,7 +20,7 @@ public:
     virtual ~DispersionCurves() = default;
     virtual double sigmaY(int cls, double x) const = 0;
     virtual double sigmaZ(int cls, double x) const = 0;
-    virtual std::string title() const = 0;   // for summaries
+    virtual std::string title() const = 0; // for summaries
 
     // The curves called `name`, or nullptr for a name not in curveNames().
     static std::unique_ptr<DispersionCurves> create(const std::string& name);

@@ -27,8 +27,8 @@ void TerrainGrid::build()
         if (!(zTop > h)) throw std::invalid_argument("model top below the terrain");
 }
 
-TerrainGrid TerrainGrid::box(int nx, int ny, int nz, double x0, double y0, double dx, double dy,
-                             double zTop, double elevation)
+TerrainGrid TerrainGrid::box(int nx, int ny, int nz, double x0, double y0, double dx, double dy, double zTop,
+                             double elevation)
 {
     return TerrainGrid(nx, ny, nz, x0, y0, dx, dy, zTop, 0.0,
                        [elevation](double, double) { return elevation; });
@@ -47,8 +47,8 @@ Flow Flow::zero(const TerrainGrid& g)
 
 struct WindModel::Impl
 {
-    std::vector<double> tx;   // (nx+1)*ny  column conductances of x faces
-    std::vector<double> ty;   // nx*(ny+1)
+    std::vector<double> tx; // (nx+1)*ny  column conductances of x faces
+    std::vector<double> ty; // nx*(ny+1)
     Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver;
 };
 
@@ -98,7 +98,7 @@ Flow WindModel::flow(double speedRef, double directionFromDeg) const
     const int nx = g.nx, ny = g.ny, nz = g.nz;
     Flow f = Flow::zero(g);
     const double th = directionFromDeg * M_PI / 180.0;
-    const double ex = -std::sin(th), ey = -std::cos(th);   // direction the air moves to
+    const double ex = -std::sin(th), ey = -std::cos(th); // direction the air moves to
     const double p = p_, zr = zRef_;
     // integral of U(z') dz' from 0 to a
     auto cum = [&](double a) { return speedRef * zr / (p + 1) * std::pow(a / zr, p + 1); };
@@ -135,8 +135,8 @@ Flow WindModel::flow(double speedRef, double directionFromDeg) const
     Eigen::VectorXd div(nx * ny);
     for (int j = 0; j < ny; ++j)
         for (int i = 0; i < nx; ++i)
-            div[j * nx + i] = mx[j * (nx + 1) + i + 1] - mx[j * (nx + 1) + i]
-                              + my[(j + 1) * nx + i] - my[j * nx + i];
+            div[j * nx + i] =
+                mx[j * (nx + 1) + i + 1] - mx[j * (nx + 1) + i] + my[(j + 1) * nx + i] - my[j * nx + i];
     const Eigen::VectorXd lam = impl_->solver.solve(div);
     auto L = [&](int i, int j) { return (i < 0 || i >= nx || j < 0 || j >= ny) ? 0.0 : lam[j * nx + i]; };
     for (int j = 0; j < ny; ++j)
@@ -144,16 +144,16 @@ Flow WindModel::flow(double speedRef, double directionFromDeg) const
         {
             const double dm = impl_->tx[j * (nx + 1) + i] * (L(i, j) - L(i - 1, j));
             for (int k = 0; k < nz; ++k)
-                f.fx[(static_cast<std::size_t>(k) * ny + j) * (nx + 1) + i]
-                    += dm * (g.fFace[k + 1] - g.fFace[k]);
+                f.fx[(static_cast<std::size_t>(k) * ny + j) * (nx + 1) + i] +=
+                    dm * (g.fFace[k + 1] - g.fFace[k]);
         }
     for (int j = 0; j <= ny; ++j)
         for (int i = 0; i < nx; ++i)
         {
             const double dm = impl_->ty[j * nx + i] * (L(i, j) - L(i, j - 1));
             for (int k = 0; k < nz; ++k)
-                f.fy[(static_cast<std::size_t>(k) * (ny + 1) + j) * nx + i]
-                    += dm * (g.fFace[k + 1] - g.fFace[k]);
+                f.fy[(static_cast<std::size_t>(k) * (ny + 1) + j) * nx + i] +=
+                    dm * (g.fFace[k + 1] - g.fFace[k]);
         }
     // flux through the s-surfaces from continuity, ground up
     double top = 0;
@@ -249,7 +249,8 @@ void Transport::setImplicitVertical(bool on)
         for (std::size_t n = 0; n < bxF_.size() && flat; ++n) flat = bxF_[n] == 0.0;
         for (std::size_t n = 0; n < byF_.size() && flat; ++n) flat = byF_[n] == 0.0;
         if (!flat)
-            throw std::invalid_argument("true-horizontal diffusion over terrain needs the explicit vertical term");
+            throw std::invalid_argument(
+                "true-horizontal diffusion over terrain needs the explicit vertical term");
     }
     implicit_ = on;
 }
@@ -287,7 +288,8 @@ double Transport::stableDt() const
                 const double dz = g.depth(i, j) * (g.fFace[k + 1] - g.fFace[k]);
                 const double hx = (g.hxf[j * (nx + 1) + i + 1] - g.hxf[j * (nx + 1) + i]) / g.dx;
                 const double hy = (g.hyf[(j + 1) * nx + i] - g.hyf[j * nx + i]) / g.dy;
-                const double slope2 = trueHorizontal_ ? (hx * hx + hy * hy) * (1 - g.fCell[k]) * (1 - g.fCell[k]) : 0.0;
+                const double slope2 =
+                    trueHorizontal_ ? (hx * hx + hy * hy) * (1 - g.fCell[k]) * (1 - g.fCell[k]) : 0.0;
                 double diff = 0;
                 if (nx > 1) diff += kH_ / (g.dx * g.dx);
                 if (ny > 1) diff += kH_ / (g.dy * g.dy);
@@ -347,9 +349,9 @@ void Transport::residual(std::vector<double>& r)
             {
                 const std::size_t n = g.idx(i, j, k);
                 const int kl = std::max(k - 1, 0), ku = std::min(k + 1, nz - 1);
-                gz_[n] = ku > kl ? (c[g.idx(i, j, ku)] - c[g.idx(i, j, kl)])
-                                       / (g.zc(i, j, ku) - g.zc(i, j, kl))
-                                 : 0.0;
+                gz_[n] = ku > kl
+                             ? (c[g.idx(i, j, ku)] - c[g.idx(i, j, kl)]) / (g.zc(i, j, ku) - g.zc(i, j, kl))
+                             : 0.0;
                 const int il = std::max(i - 1, 0), iu = std::min(i + 1, nx - 1);
                 gxs_[n] = iu > il ? (c[g.idx(iu, j, k)] - c[g.idx(il, j, k)]) / ((iu - il) * g.dx) : 0.0;
                 const int jl = std::max(j - 1, 0), ju = std::min(j + 1, ny - 1);
@@ -424,8 +426,7 @@ void Transport::residual(std::vector<double>& r)
                     cf = faceValue(scheme_, j >= 2 ? c[nL - nx] : c[nL], c[nL], c[nR]);
                 else
                     cf = faceValue(scheme_, j + 1 < ny ? c[nR + nx] : c[nR], c[nR], c[nL]);
-                phi = F * cf - ayF_[frow + i] * (c[nR] - c[nL])
-                      + byF_[frow + i] * 0.5 * (gz_[nR] + gz_[nL]);
+                phi = F * cf - ayF_[frow + i] * (c[nR] - c[nL]) + byF_[frow + i] * 0.5 * (gz_[nR] + gz_[nL]);
                 r[nL] -= phi;
                 r[nR] += phi;
             }
@@ -467,8 +468,7 @@ void Transport::step(double dt)
     const double wNew = first_ ? 1.0 : 1.5, wOld = first_ ? 0.0 : -0.5;
     if (!implicit_)
     {
-        for (std::size_t n = 0; n < c.size(); ++n)
-            c[n] += dt * (wNew * r_[n] + wOld * rPrev_[n]) / vol_[n];
+        for (std::size_t n = 0; n < c.size(); ++n) c[n] += dt * (wNew * r_[n] + wOld * rPrev_[n]) / vol_[n];
     }
     else
     {
@@ -542,8 +542,8 @@ double Transport::sample(double x, double y, double hag) const
         }
         return c[g.idx(i, j, g.nz - 1)];
     };
-    return (1 - a) * (1 - b) * column(i0, j0) + a * (1 - b) * column(i1, j0)
-           + (1 - a) * b * column(i0, j1) + a * b * column(i1, j1);
+    return (1 - a) * (1 - b) * column(i0, j0) + a * (1 - b) * column(i1, j0) + (1 - a) * b * column(i0, j1)
+           + a * b * column(i1, j1);
 }
 
 } // namespace procsim::plume

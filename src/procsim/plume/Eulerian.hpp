@@ -42,8 +42,8 @@ public:
     // Columns of size dx x dy starting at (x0, y0); terrain h given at cell
     // centres (nx*ny) and sampled by `terrainAt` at face centres.
     template <class TerrainFn>
-    TerrainGrid(int nx, int ny, int nz, double x0, double y0, double dx, double dy, double zTop,
-                double beta, TerrainFn terrainAt)
+    TerrainGrid(int nx, int ny, int nz, double x0, double y0, double dx, double dy, double zTop, double beta,
+                TerrainFn terrainAt)
         : nx(nx), ny(ny), nz(nz), x0(x0), y0(y0), dx(dx), dy(dy), zTop(zTop), beta(beta)
     {
         hc.resize(static_cast<std::size_t>(nx) * ny);
@@ -59,32 +59,26 @@ public:
     }
 
     // Flat, uniform box (Cartesian grid) of height zTop above h = elevation.
-    static TerrainGrid box(int nx, int ny, int nz, double x0, double y0, double dx, double dy,
-                           double zTop, double elevation = 0.0);
+    static TerrainGrid box(int nx, int ny, int nz, double x0, double y0, double dx, double dy, double zTop,
+                           double elevation = 0.0);
 
     int nx, ny, nz;
     double x0, y0, dx, dy, zTop, beta;
-    std::vector<double> fFace;   // f at the nz+1 level faces
-    std::vector<double> fCell;   // f at cell centres (mid-face in s)
-    std::vector<double> hc;      // terrain at column centres
-    std::vector<double> hxf;     // terrain at x-face centres ((nx+1)*ny)
-    std::vector<double> hyf;     // terrain at y-face centres (nx*(ny+1))
+    std::vector<double> fFace; // f at the nz+1 level faces
+    std::vector<double> fCell; // f at cell centres (mid-face in s)
+    std::vector<double> hc;    // terrain at column centres
+    std::vector<double> hxf;   // terrain at x-face centres ((nx+1)*ny)
+    std::vector<double> hyf;   // terrain at y-face centres (nx*(ny+1))
 
     std::size_t size() const { return static_cast<std::size_t>(nx) * ny * nz; }
     std::size_t col(int i, int j) const { return static_cast<std::size_t>(j) * nx + i; }
-    std::size_t idx(int i, int j, int k) const
-    {
-        return (static_cast<std::size_t>(k) * ny + j) * nx + i;
-    }
+    std::size_t idx(int i, int j, int k) const { return (static_cast<std::size_t>(k) * ny + j) * nx + i; }
     double xc(int i) const { return x0 + (i + 0.5) * dx; }
     double yc(int j) const { return y0 + (j + 0.5) * dy; }
     double depth(int i, int j) const { return zTop - hc[col(i, j)]; }
     double zc(int i, int j, int k) const { return hc[col(i, j)] + depth(i, j) * fCell[k]; }
     double heightAboveGround(int i, int j, int k) const { return depth(i, j) * fCell[k]; }
-    double volume(int i, int j, int k) const
-    {
-        return dx * dy * depth(i, j) * (fFace[k + 1] - fFace[k]);
-    }
+    double volume(int i, int j, int k) const { return dx * dy * depth(i, j) * (fFace[k + 1] - fFace[k]); }
     bool containsXY(double x, double y) const
     {
         return x >= x0 && x <= x0 + nx * dx && y >= y0 && y <= y0 + ny * dy;
@@ -97,10 +91,10 @@ private:
 // Volume fluxes [m^3/s] through the faces, positive along +x, +y, +s.
 struct Flow
 {
-    std::vector<double> fx;   // (nx+1)*ny*nz, index (k*ny + j)*(nx+1) + i
-    std::vector<double> fy;   // nx*(ny+1)*nz, index (k*(ny+1) + j)*nx + i
-    std::vector<double> fs;   // nx*ny*(nz+1), index (k*ny + j)*nx + i
-    double maxTopFlux = 0;    // |flux| left at the top after the adjustment (diagnostic)
+    std::vector<double> fx; // (nx+1)*ny*nz, index (k*ny + j)*(nx+1) + i
+    std::vector<double> fy; // nx*(ny+1)*nz, index (k*(ny+1) + j)*nx + i
+    std::vector<double> fs; // nx*ny*(nz+1), index (k*ny + j)*nx + i
+    double maxTopFlux = 0;  // |flux| left at the top after the adjustment (diagnostic)
 
     static Flow zero(const TerrainGrid& g);
 };
@@ -128,7 +122,12 @@ private:
     std::shared_ptr<Impl> impl_;
 };
 
-enum class Advection { LimitedQuick, Quick, Upwind };
+enum class Advection
+{
+    LimitedQuick,
+    Quick,
+    Upwind
+};
 
 // The transport solver.
 class Transport
@@ -143,7 +142,7 @@ public:
               bool trueHorizontal = true);
 
     void setFlow(const Flow& flow);
-    void setSources(std::vector<double> kgPerS);   // per cell [kg/s]
+    void setSources(std::vector<double> kgPerS); // per cell [kg/s]
     void setBackground(double kgPerM3) { background_ = kgPerM3; }
     void setImplicitVertical(bool on);
     bool implicitVertical() const { return implicit_; }
@@ -160,9 +159,9 @@ public:
     void step(double dt);
     double time() const { return time_; }
 
-    std::vector<double> c;   // concentration [kg/m^3]
-    double mass() const;     // sum of C V [kg]
-    double boundaryOutflow() const { return outflow_; }   // mass that left [kg]
+    std::vector<double> c;                              // concentration [kg/m^3]
+    double mass() const;                                // sum of C V [kg]
+    double boundaryOutflow() const { return outflow_; } // mass that left [kg]
 
     // Concentration at (x, y) and height above ground [m]; bilinear between
     // columns, linear in the height above ground (constant below the first
@@ -179,9 +178,9 @@ private:
     std::vector<double> src_;
     std::vector<double> vol_;
     std::vector<double> rPrev_, r_;
-    std::vector<double> gz_, gxs_, gys_;   // cell gradients used by the cross terms
+    std::vector<double> gz_, gxs_, gys_; // cell gradients used by the cross terms
     // face diffusion coefficients
-    std::vector<double> axF_, bxF_;   // x faces: a (C_R - C_L) and b * dC/dz
+    std::vector<double> axF_, bxF_; // x faces: a (C_R - C_L) and b * dC/dz
     std::vector<double> ayF_, byF_;
     std::vector<double> asF_, bsxF_, bsyF_;
     double background_ = 0;

@@ -19,15 +19,16 @@ namespace procsim::plume
 namespace
 {
 
-constexpr double bytesPerCell = 400;      // fields, fluxes and the implicit vertical solve
+constexpr double bytesPerCell = 400; // fields, fluxes and the implicit vertical solve
 
 } // namespace
 
 std::unique_ptr<TerrainGrid> EulerianCase::makeGrid() const
 {
     const double w = terrain.ncols * terrain.cell, h = terrain.nrows * terrain.cell;
-    checkMemory(std::floor(w / cellSize + 1e-9) * std::floor(h / cellSize + 1e-9) * levels, bytesPerCell, file,
-                "a grid of " + formatNumber(cellSize, 3) + " m cells with " + std::to_string(levels) + " levels");
+    checkMemory(
+        std::floor(w / cellSize + 1e-9) * std::floor(h / cellSize + 1e-9) * levels, bytesPerCell, file,
+        "a grid of " + formatNumber(cellSize, 3) + " m cells with " + std::to_string(levels) + " levels");
     const int nx = std::max(2, static_cast<int>(std::floor(w / cellSize + 1e-9)));
     const int ny = std::max(2, static_cast<int>(std::floor(h / cellSize + 1e-9)));
     const double highest = *std::max_element(terrain.z.begin(), terrain.z.end());
@@ -42,7 +43,7 @@ namespace
 
 void readGrid(const YamlInput& in, EulerianCase& c)
 {
-    c.cellSize = c.terrain.cell;   // default: the terrain's own cells
+    c.cellSize = c.terrain.cell; // default: the terrain's own cells
     if (in.has("grid"))
     {
         const YamlInput g = in.child("grid");
@@ -63,13 +64,19 @@ void readDispersion(const YamlInput& in, EulerianCase& c, double& kH, double& kV
     const YamlInput d = in.child("dispersion");
     d.rejectUnknown({"K_H_m2_s", "K_V_m2_s", "advection", "vertical_diffusion", "horizontal_diffusion"});
     const std::string hd = d.text("horizontal_diffusion", "along_terrain");
-    if (hd == "along_terrain") c.trueHorizontal = false;
-    else if (hd == "true_horizontal") c.trueHorizontal = true;
-    else throw d.error("horizontal_diffusion", "along_terrain or true_horizontal");
+    if (hd == "along_terrain")
+        c.trueHorizontal = false;
+    else if (hd == "true_horizontal")
+        c.trueHorizontal = true;
+    else
+        throw d.error("horizontal_diffusion", "along_terrain or true_horizontal");
     const std::string v = d.text("vertical_diffusion", "implicit");
-    if (v == "implicit") c.implicitVertical = true;
-    else if (v == "explicit") c.implicitVertical = false;
-    else throw d.error("vertical_diffusion", "implicit (Crank-Nicolson) or explicit (AB2)");
+    if (v == "implicit")
+        c.implicitVertical = true;
+    else if (v == "explicit")
+        c.implicitVertical = false;
+    else
+        throw d.error("vertical_diffusion", "implicit (Crank-Nicolson) or explicit (AB2)");
     if (c.trueHorizontal && c.implicitVertical)
         throw d.error("horizontal_diffusion",
                       "along_terrain when vertical_diffusion is implicit (true_horizontal needs "
@@ -77,10 +84,14 @@ void readDispersion(const YamlInput& in, EulerianCase& c, double& kH, double& kV
     if (d.has("K_H_m2_s")) kH = d.nonNegative("K_H_m2_s", "m2/s");
     if (d.has("K_V_m2_s")) kV = d.nonNegative("K_V_m2_s", "m2/s");
     const std::string a = d.text("advection", "limited_quick");
-    if (a == "limited_quick") c.advection = Advection::LimitedQuick;
-    else if (a == "quick") c.advection = Advection::Quick;
-    else if (a == "upwind") c.advection = Advection::Upwind;
-    else throw d.error("advection", "one of limited_quick, quick, upwind");
+    if (a == "limited_quick")
+        c.advection = Advection::LimitedQuick;
+    else if (a == "quick")
+        c.advection = Advection::Quick;
+    else if (a == "upwind")
+        c.advection = Advection::Upwind;
+    else
+        throw d.error("advection", "one of limited_quick, quick, upwind");
 }
 
 void readWindAndTime(const YamlInput& in, EulerianCase& c)
@@ -111,7 +122,8 @@ void readOutput(const YamlInput& in, EulerianCase& c)
     if (!in.has("output")) return;
     const YamlInput o = in.child("output");
     o.rejectUnknown({"vts_every_h", "background_ug_m3", "standard_24h_ug_m3", "measured_24h"});
-    if (o.has("vts_every_h")) c.vtsEveryHours = static_cast<int>(o.integer("vts_every_h", 0, 1000000));   // 0 = none
+    if (o.has("vts_every_h"))
+        c.vtsEveryHours = static_cast<int>(o.integer("vts_every_h", 0, 1000000)); // 0 = none
     c.backgroundUgM3 = o.has("background_ug_m3") ? o.nonNegative("background_ug_m3", "ug/m3") : 0.0;
     if (o.has("standard_24h_ug_m3")) c.standardUgM3 = o.positive("standard_24h_ug_m3", "ug/m3");
 }
@@ -131,7 +143,8 @@ void readMeasured(const std::string& path, EulerianCase& c)
             throw InputError(path + ": column '" + t.header[col]
                              + "' names no receptor (expected '<receptor> [ug/m3]')");
         for (const auto& row : t.rows)
-            if (row[col] >= 0) c.measured24h[r].emplace_back(static_cast<int>(std::lround(row[cd])), row[col]);
+            if (row[col] >= 0)
+                c.measured24h[r].emplace_back(static_cast<int>(std::lround(row[cd])), row[col]);
     }
 }
 
@@ -156,8 +169,8 @@ Scenario readScenario(const YamlInput& s, double kH, double kV)
 EulerianCase loadEulerianCase(const std::string& path)
 {
     const YamlInput in = YamlInput::load(path);
-    in.rejectUnknown({"terrain", "grid", "dispersion", "wind", "time", "meteorology", "sources",
-                      "receptors", "scenarios", "output"});
+    in.rejectUnknown({"terrain", "grid", "dispersion", "wind", "time", "meteorology", "sources", "receptors",
+                      "scenarios", "output"});
     EulerianCase c;
     c.file = path;
     c.dir = fs::path(path).parent_path().string();
@@ -238,10 +251,11 @@ std::vector<double> distributeSources(const TerrainGrid& g, const std::vector<So
         const double ax = s.x - 0.5 * s.lx, bx = s.x + 0.5 * s.lx;
         const double ay = s.y - 0.5 * s.ly, by = s.y + 0.5 * s.ly;
         if (ax < g.x0 || bx > X1 || ay < g.y0 || by > Y1)
-            throw InputError(s.where + ": source '" + s.name + "' (x " + formatNumber(ax) + ".." + formatNumber(bx)
-                             + ", y " + formatNumber(ay) + ".." + formatNumber(by) + " m) lies outside the domain (x "
-                             + formatNumber(g.x0) + ".." + formatNumber(X1) + ", y " + formatNumber(g.y0) + ".."
-                             + formatNumber(Y1) + " m)");
+            throw InputError(s.where + ": source '" + s.name + "' (x " + formatNumber(ax) + ".."
+                             + formatNumber(bx) + ", y " + formatNumber(ay) + ".." + formatNumber(by)
+                             + " m) lies outside the domain (x " + formatNumber(g.x0) + ".."
+                             + formatNumber(X1) + ", y " + formatNumber(g.y0) + ".." + formatNumber(Y1)
+                             + " m)");
         // columns and their horizontal weights
         std::vector<std::pair<std::size_t, double>> cols;
         if (s.type == Source::Type::Point)
@@ -278,7 +292,8 @@ std::vector<double> distributeSources(const TerrainGrid& g, const std::vector<So
             {
                 if (s.height >= d)
                     throw InputError(s.where + ": source '" + s.name + "' is above the model lid");
-                for (const auto& [k, wz] : layersAround(g, i, j, s.height)) q[g.idx(i, j, k)] += rate * w * wz;
+                for (const auto& [k, wz] : layersAround(g, i, j, s.height))
+                    q[g.idx(i, j, k)] += rate * w * wz;
             }
         }
     }
@@ -291,8 +306,8 @@ void checkReceptors(const TerrainGrid& g, const std::vector<Receptor>& receptors
     {
         if (!g.containsXY(r.x, r.y))
             throw InputError(r.where + ": receptor '" + r.name + "' at (" + formatNumber(r.x) + ", "
-                             + formatNumber(r.y) + ") m lies outside the domain (x " + formatNumber(g.x0) + ".."
-                             + formatNumber(g.x0 + g.nx * g.dx) + ", y " + formatNumber(g.y0) + ".."
+                             + formatNumber(r.y) + ") m lies outside the domain (x " + formatNumber(g.x0)
+                             + ".." + formatNumber(g.x0 + g.nx * g.dx) + ", y " + formatNumber(g.y0) + ".."
                              + formatNumber(g.y0 + g.ny * g.dy) + " m)");
     }
 }

@@ -16,24 +16,24 @@ namespace procsim::plume
 struct Scenario
 {
     std::string name;
-    double kH = 200, kV = 1;   // m^2/s
-    double reduction = 0;      // fraction of the controlled emissions removed (0.8 = the paper's cut)
+    double kH = 200, kV = 1; // m^2/s
+    double reduction = 0;    // fraction of the controlled emissions removed (0.8 = the paper's cut)
 };
 
 struct EulerianCase
 {
-    std::string file;          // the YAML
-    std::string dir;           // its directory (relative paths start here)
+    std::string file; // the YAML
+    std::string dir;  // its directory (relative paths start here)
     EsriGrid terrain;
-    double cellSize = 0;       // m
+    double cellSize = 0; // m
     int levels = 12;
-    double topAboveHighest = 600;   // m
+    double topAboveHighest = 600; // m
     double stretching = 2.0;
     Advection advection = Advection::LimitedQuick;
     bool implicitVertical = true;
-    bool trueHorizontal = false;   // K_H along the terrain-following surfaces
+    bool trueHorizontal = false; // K_H along the terrain-following surfaces
     double exponent = 0.25, zRef = 10;
-    double dt = 0;             // s, 0 = automatic
+    double dt = 0; // s, 0 = automatic
     double cflFraction = 0.9;
     double backgroundUgM3 = 0;
     double standardUgM3 = 120;
@@ -58,9 +58,9 @@ void checkReceptors(const TerrainGrid& g, const std::vector<Receptor>& receptors
 
 struct ScenarioResult
 {
-    std::vector<std::vector<double>> hourly;   // [receptor][hour], 1-h averages [ug/m3]
-    std::vector<double> groundMean;            // run-average of the lowest cell layer [ug/m3]
-    double emitted = 0, inDomain = 0, leftDomain = 0;   // kg, for the mass balance
+    std::vector<std::vector<double>> hourly;          // [receptor][hour], 1-h averages [ug/m3]
+    std::vector<double> groundMean;                   // run-average of the lowest cell layer [ug/m3]
+    double emitted = 0, inDomain = 0, leftDomain = 0; // kg, for the mass balance
     double dtMin = 0, dtMax = 0;
     long steps = 0;
 };

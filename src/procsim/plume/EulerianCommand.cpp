@@ -34,7 +34,7 @@ namespace
 {
 
 constexpr long maxStepsPerHour = 10000000;
-constexpr double maxCellUpdates = 1e12;   // ~6 h at ~5e7 cell updates per second
+constexpr double maxCellUpdates = 1e12; // ~6 h at ~5e7 cell updates per second
 
 // ---- parse -------------------------------------------------------------------
 
@@ -42,7 +42,7 @@ struct EulerianArgs
 {
     std::string casePath;
     std::string outDir = "results";
-    std::optional<long> hours;   // none: all the meteorology
+    std::optional<long> hours; // none: all the meteorology
     unsigned threads = 1;
 };
 
@@ -66,18 +66,19 @@ int runHours(const EulerianCase& cs, const EulerianArgs& a)
 {
     const int metHours = static_cast<int>(cs.met.hours.size());
     if (a.hours && *a.hours > metHours)
-        throw InputError("plume eulerian: option --hours " + std::to_string(*a.hours) + " asks for more than the "
-                         + std::to_string(metHours) + " hours of meteorology of " + cs.file);
+        throw InputError("plume eulerian: option --hours " + std::to_string(*a.hours)
+                         + " asks for more than the " + std::to_string(metHours) + " hours of meteorology of "
+                         + cs.file);
     return a.hours ? static_cast<int>(*a.hours) : metHours;
 }
 
 // The smallest stable step over all hours and scenarios, and where it occurs.
 struct StabilityLimit
 {
-    double dt = 1e300;   // s
+    double dt = 1e300; // s
     int hour = 0;
     std::string scenario;
-    double topFlux = 0;  // largest flux left through the lid by the wind adjustment [m3/s]
+    double topFlux = 0; // largest flux left through the lid by the wind adjustment [m3/s]
 };
 
 StabilityLimit stabilityLimit(const EulerianCase& cs, const TerrainGrid& g, const WindModel& wind, int hours)
@@ -103,8 +104,9 @@ StabilityLimit stabilityLimit(const EulerianCase& cs, const TerrainGrid& g, cons
 void checkTimeStep(const EulerianCase& cs, const StabilityLimit& s)
 {
     if (cs.dt <= s.dt) return;
-    throw InputError(cs.file + ": key 'time.dt_s' = " + formatNumber(cs.dt) + " s exceeds the stability limit "
-                     + formatNumber(s.dt, 3) + " s (scenario '" + s.scenario + "', hour " + std::to_string(s.hour)
+    throw InputError(cs.file + ": key 'time.dt_s' = " + formatNumber(cs.dt)
+                     + " s exceeds the stability limit " + formatNumber(s.dt, 3) + " s (scenario '"
+                     + s.scenario + "', hour " + std::to_string(s.hour)
                      + "; Adams-Bashforth needs dt <= 1/(4 sum K/dx^2 + sum|F|/V)"
                      + (cs.implicitVertical ? ", vertical diffusion implicit)" : ")"));
 }
@@ -122,9 +124,10 @@ void checkWork(const EulerianCase& cs, const TerrainGrid& g, const StabilityLimi
     const double updates = static_cast<double>(g.nx) * g.ny * g.nz * perHour * hours * cs.scenarios.size();
     if (updates <= maxCellUpdates) return;
     throw InputError(cs.file + ": the run needs about " + formatFixed(updates, 2) + " cell updates (grid "
-                     + std::to_string(g.nx) + " x " + std::to_string(g.ny) + " x " + std::to_string(g.nz) + ", "
-                     + std::to_string(perHour) + " steps per hour, " + std::to_string(hours) + " h, "
-                     + std::to_string(cs.scenarios.size()) + " scenarios; limit " + formatFixed(maxCellUpdates, 2)
+                     + std::to_string(g.nx) + " x " + std::to_string(g.ny) + " x " + std::to_string(g.nz)
+                     + ", " + std::to_string(perHour) + " steps per hour, " + std::to_string(hours) + " h, "
+                     + std::to_string(cs.scenarios.size()) + " scenarios; limit "
+                     + formatFixed(maxCellUpdates, 2)
                      + "); use a coarser grid.cell_size_m, fewer --hours or a larger dt_s");
 }
 
@@ -147,7 +150,7 @@ Transport startTransport(const RunContext& rc, const Scenario& sc, const std::ve
     Transport t(rc.g, sc.kH, sc.kV, rc.cs.advection, rc.cs.trueHorizontal);
     t.setImplicitVertical(rc.cs.implicitVertical);
     t.setBackground(rc.cs.backgroundUgM3 * 1e-9);
-    for (auto& v : t.c) v = rc.cs.backgroundUgM3 * 1e-9;   // the run starts from the background
+    for (auto& v : t.c) v = rc.cs.backgroundUgM3 * 1e-9; // the run starts from the background
     t.setSources(q);
     return t;
 }
@@ -155,8 +158,8 @@ Transport startTransport(const RunContext& rc, const Scenario& sc, const std::ve
 // Time integral of the lowest cell layer, for the run-mean ground map.
 struct GroundIntegral
 {
-    std::vector<double> sum;   // per column [kg s/m3]
-    double time = 0;           // s
+    std::vector<double> sum; // per column [kg s/m3]
+    double time = 0;         // s
 };
 
 // One hour of meteorology in whole steps of at most the stable dt: the
@@ -179,7 +182,7 @@ void runHour(const RunContext& rc, Transport& t, int h, ScenarioResult& res, Gro
         ground.time += dt;
     }
     res.steps += n;
-    for (std::size_t r = 0; r < receptors.size(); ++r) res.hourly[r][h] *= 1e9 / n;   // kg/m3 -> ug/m3
+    for (std::size_t r = 0; r < receptors.size(); ++r) res.hourly[r][h] *= 1e9 / n; // kg/m3 -> ug/m3
 }
 
 // The field after hour h as dir/vts/C_<h>h.vts, listed in the .pvd entries.
@@ -225,7 +228,7 @@ ScenarioResult runScenario(const RunContext& rc, const Scenario& sc)
     res.groundMean.resize(ground.sum.size());
     for (std::size_t col = 0; col < ground.sum.size(); ++col)
         res.groundMean[col] = ground.sum[col] / ground.time * 1e9;
-    double qTotal = 0;   // kg/s
+    double qTotal = 0; // kg/s
     for (double v : q) qTotal += v;
     res.emitted = qTotal * t.time();
     res.inDomain = t.mass() - m0;
@@ -321,7 +324,8 @@ void writeGroundMean(const std::string& dir, const TerrainGrid& g, const Scenari
 }
 
 // The map's inputs as gnuplot grids (a blank line after each row of cells).
-void writeMapData(const std::string& dir, const EulerianCase& cs, const TerrainGrid& g, const ScenarioResult& res)
+void writeMapData(const std::string& dir, const EulerianCase& cs, const TerrainGrid& g,
+                  const ScenarioResult& res)
 {
     OutputFile ground(dir + "/map_ground.dat"), sources(dir + "/map_sources.dat"),
         receptors(dir + "/map_receptors.dat");
@@ -329,10 +333,11 @@ void writeMapData(const std::string& dir, const EulerianCase& cs, const TerrainG
     {
         for (int i = 0; i < g.nx; ++i)
             ground.out() << fmt::format("{} {} {} {}\n", formatNumber(g.xc(i)), formatNumber(g.yc(j)),
-                                        formatNumber(g.hc[g.col(i, j)]), formatNumber(res.groundMean[g.col(i, j)]));
+                                        formatNumber(g.hc[g.col(i, j)]),
+                                        formatNumber(res.groundMean[g.col(i, j)]));
         ground.out() << '\n';
     }
-    for (const auto& s : cs.sources)   // half sizes, at least an eighth of a cell to stay visible
+    for (const auto& s : cs.sources) // half sizes, at least an eighth of a cell to stay visible
         sources.out() << fmt::format("{} {} {} {} {}\n", formatNumber(s.x), formatNumber(s.y),
                                      formatNumber(std::max(0.5 * s.lx, 0.5 * g.dx / 4)),
                                      formatNumber(std::max(0.5 * s.ly, 0.5 * g.dy / 4)), s.name);
@@ -351,8 +356,8 @@ void plotMap(const std::string& dir, const Scenario& sc, const TerrainGrid& g, i
                 .set("contours", dir + "/map_contours.dat")
                 .set("sources", dir + "/map_sources.dat")
                 .set("receptors", dir + "/map_receptors.dat")
-                .set("title_text", "Scenario " + sc.name + ": ground-level PM10, mean over " + std::to_string(hours)
-                                       + " h [ug/m3]; dashed: terrain contours")
+                .set("title_text", "Scenario " + sc.name + ": ground-level PM10, mean over "
+                                       + std::to_string(hours) + " h [ug/m3]; dashed: terrain contours")
                 .set("x0", g.x0)
                 .set("x1", g.x0 + g.nx * g.dx)
                 .set("y0", g.y0)
@@ -371,8 +376,8 @@ void plot24h(const std::string& dir, const EulerianCase& cs, const Scenario& sc)
 }
 
 // Measured against predicted 24-h averages at receptor r (the paper's Fig 2).
-void reportMeasured(const std::string& dir, const EulerianCase& cs, const Scenario& sc, const ScenarioResult& res,
-                    std::size_t r, int hours)
+void reportMeasured(const std::string& dir, const EulerianCase& cs, const Scenario& sc,
+                    const ScenarioResult& res, std::size_t r, int hours)
 {
     const std::string name = cs.receptors[r].name;
     const std::string file = dir + "/measured_" + name + ".csv";
@@ -381,7 +386,7 @@ void reportMeasured(const std::string& dir, const EulerianCase& cs, const Scenar
     int n = 0;
     for (const auto& [day, value] : cs.measured24h[r])
     {
-        if (day < 1 || day * 24 > hours) continue;   // outside the run
+        if (day < 1 || day * 24 > hours) continue; // outside the run
         double predicted = 0;
         for (int h = (day - 1) * 24; h < day * 24; ++h) predicted += res.hourly[r][h] / 24;
         w.row(std::vector<double>{static_cast<double>(day), value, predicted});
@@ -391,8 +396,8 @@ void reportMeasured(const std::string& dir, const EulerianCase& cs, const Scenar
     }
     w.close();
     if (n == 0) return;
-    fmt::print("  [{}] {}: {} measured days, mean measured {}, predicted {} ug/m3 (ratio {})\n", sc.name, name, n,
-               formatFixed(sm / n, 2), formatFixed(sp / n, 2), formatFixed(sp / sm, 3));
+    fmt::print("  [{}] {}: {} measured days, mean measured {}, predicted {} ug/m3 (ratio {})\n", sc.name,
+               name, n, formatFixed(sm / n, 2), formatFixed(sp / n, 2), formatFixed(sp / sm, 3));
     plotPng(dir + "/measured_" + name + ".png", texts::plots::measured,
             PlotVariables()
                 .set("csv", file)
@@ -400,8 +405,8 @@ void reportMeasured(const std::string& dir, const EulerianCase& cs, const Scenar
                 .set("standard", cs.standardUgM3));
 }
 
-void reportScenario(const EulerianCase& cs, const TerrainGrid& g, const Scenario& sc, const ScenarioResult& res,
-                    const std::string& outDir, int hours)
+void reportScenario(const EulerianCase& cs, const TerrainGrid& g, const Scenario& sc,
+                    const ScenarioResult& res, const std::string& outDir, int hours)
 {
     const std::string dir = (fs::path(outDir) / sc.name).string();
     writeHourly(dir, cs, res, hours);
@@ -419,8 +424,8 @@ void reportScenario(const EulerianCase& cs, const TerrainGrid& g, const Scenario
 
 // Table 1 of the paper: run mean and highest 24-h average per receptor and
 // scenario, as table.csv and on stdout (* above the 24-h standard).
-void reportTable(const EulerianCase& cs, const std::vector<ScenarioResult>& results, const std::string& outDir,
-                 int hours)
+void reportTable(const EulerianCase& cs, const std::vector<ScenarioResult>& results,
+                 const std::string& outDir, int hours)
 {
     std::vector<std::string> header = {"receptor", "name"};
     for (const auto& sc : cs.scenarios)
@@ -461,11 +466,12 @@ void printBalances(const EulerianCase& cs, const std::vector<ScenarioResult>& re
         const Scenario& sc = cs.scenarios[k];
         const ScenarioResult& r = results[k];
         const double imbalance = (r.emitted - r.inDomain - r.leftDomain) / std::max(r.emitted, 1e-300);
-        fmt::print("  [{}] K_H {}, K_V {} m2/s, reduction {} %: {} steps (dt {}..{} s); emitted {} kg, in domain {} "
-                   "kg, left {} kg, relative imbalance {}\n",
-                   sc.name, formatNumber(sc.kH), formatNumber(sc.kV), formatNumber(sc.reduction * 100), r.steps,
-                   formatFixed(r.dtMin, 2), formatFixed(r.dtMax, 2), formatFixed(r.emitted, 1),
-                   formatFixed(r.inDomain, 1), formatFixed(r.leftDomain, 1), formatScientific(imbalance, 2));
+        fmt::print(
+            "  [{}] K_H {}, K_V {} m2/s, reduction {} %: {} steps (dt {}..{} s); emitted {} kg, in domain {} "
+            "kg, left {} kg, relative imbalance {}\n",
+            sc.name, formatNumber(sc.kH), formatNumber(sc.kV), formatNumber(sc.reduction * 100), r.steps,
+            formatFixed(r.dtMin, 2), formatFixed(r.dtMax, 2), formatFixed(r.emitted, 1),
+            formatFixed(r.inDomain, 1), formatFixed(r.leftDomain, 1), formatScientific(imbalance, 2));
     }
 }
 
@@ -479,7 +485,7 @@ int eulerianCommand(int argc, char** argv)
     const auto grid = cs.makeGrid();
     const TerrainGrid& g = *grid;
     checkReceptors(g, cs.receptors);
-    for (const auto& sc : cs.scenarios) distributeSources(g, cs.sources, sc.reduction);   // validates
+    for (const auto& sc : cs.scenarios) distributeSources(g, cs.sources, sc.reduction); // validates
     const int hours = runHours(cs, *args);
     const WindModel wind(g, cs.exponent, cs.zRef);
     const StabilityLimit limit = stabilityLimit(cs, g, wind, hours);
@@ -500,9 +506,10 @@ int eulerianCommand(int argc, char** argv)
         reportScenario(cs, g, cs.scenarios[k], results[k], args->outDir, hours);
     reportTable(cs, results, args->outDir, hours);
     printBalances(cs, results);
-    fmt::print("  wind: largest flux through the lid after adjustment {} m3/s\n  wall time {:.1f} s; outputs in {}/ "
-               "(table.csv; per scenario receptors_*.csv, ground_mean.png, C.pvd)\n",
-               formatNumber(limit.topFlux, 3), wall, args->outDir);
+    fmt::print(
+        "  wind: largest flux through the lid after adjustment {} m3/s\n  wall time {:.1f} s; outputs in {}/ "
+        "(table.csv; per scenario receptors_*.csv, ground_mean.png, C.pvd)\n",
+        formatNumber(limit.topFlux, 3), wall, args->outDir);
     return 0;
 }
 

@@ -22,9 +22,15 @@ using DoublePolicy = boost::math::policies::policy<boost::math::policies::promot
 
 } // namespace
 
-double digamma(double x) { return boost::math::digamma(x, DoublePolicy()); }
+double digamma(double x)
+{
+    return boost::math::digamma(x, DoublePolicy());
+}
 
-double trigamma(double x) { return boost::math::trigamma(x, DoublePolicy()); }
+double trigamma(double x)
+{
+    return boost::math::trigamma(x, DoublePolicy());
+}
 
 GammaFit fitGamma(const std::vector<double>& x)
 {
@@ -37,8 +43,10 @@ GammaFit fitGamma(const std::vector<double>& x)
     {
         if (!(v >= 0)) throw std::invalid_argument("gamma fit needs values >= 0");
         mean += v;
-        if (v > 0) meanLog += std::log(v);
-        else positive = false;
+        if (v > 0)
+            meanLog += std::log(v);
+        else
+            positive = false;
     }
     mean /= x.size();
     if (!(mean > 0)) throw std::invalid_argument("gamma fit: all values are zero");
@@ -102,9 +110,15 @@ double inverseNormal(double p)
     return -std::sqrt(2.0) * boost::math::erfc_inv(2 * p, DoublePolicy());
 }
 
-double gammaQuantile(const GammaFit& g, double p) { return gammaQuantileZ(g, inverseNormal(p)); }
+double gammaQuantile(const GammaFit& g, double p)
+{
+    return gammaQuantileZ(g, inverseNormal(p));
+}
 
-double normalCdf(double z) { return 0.5 * std::erfc(-z / std::sqrt(2.0)); }
+double normalCdf(double z)
+{
+    return 0.5 * std::erfc(-z / std::sqrt(2.0));
+}
 
 namespace
 {

@@ -10,10 +10,10 @@ namespace procsim::plume
 
 struct GammaFit
 {
-    double shape = 1;   // k
-    double scale = 1;   // theta  (mean = k theta, variance = k theta^2)
+    double shape = 1; // k
+    double scale = 1; // theta  (mean = k theta, variance = k theta^2)
     int n = 0;
-    bool moments = false;   // true: fitted by moments (data had zeros)
+    bool moments = false; // true: fitted by moments (data had zeros)
 };
 
 // Maximum likelihood (Minka's start + Newton on ln k - psi(k) = ln mean - mean ln x)
@@ -38,8 +38,8 @@ class Stream
 {
 public:
     Stream(std::uint64_t seed, std::uint64_t index);
-    double uniform();   // (0, 1)
-    double normal();    // N(0, 1), Box-Muller
+    double uniform(); // (0, 1)
+    double normal();  // N(0, 1), Box-Muller
 private:
     std::mt19937_64 gen_;
     bool haveSpare_ = false;

@@ -11,7 +11,7 @@ namespace procsim::plume
 double solarElevationDeg(double latitudeDeg, int dayOfYear, double solarHour)
 {
     const double rad = M_PI / 180.0;
-    const double decl = 23.45 * std::sin(2 * M_PI * (284 + dayOfYear) / 365.0);   // deg (Cooper)
+    const double decl = 23.45 * std::sin(2 * M_PI * (284 + dayOfYear) / 365.0); // deg (Cooper)
     const double hourAngle = 15.0 * (solarHour - 12.0);
     const double s = std::sin(latitudeDeg * rad) * std::sin(decl * rad)
                      + std::cos(latitudeDeg * rad) * std::cos(decl * rad) * std::cos(hourAngle * rad);
@@ -20,11 +20,19 @@ double solarElevationDeg(double latitudeDeg, int dayOfYear, double solarHour)
 
 int stabilityClass(double u, double cloud, double sun)
 {
-    enum { A = 1, B, C, D, E, F };
-    if (cloud >= 8.0 - 1e-9) return D;   // overcast, day or night
+    enum
+    {
+        A = 1,
+        B,
+        C,
+        D,
+        E,
+        F
+    };
+    if (cloud >= 8.0 - 1e-9) return D; // overcast, day or night
     if (sun > 0)
     {
-        int ins = sun > 60 ? 3 : (sun > 35 ? 2 : 1);   // 3 strong, 2 moderate, 1 slight
+        int ins = sun > 60 ? 3 : (sun > 35 ? 2 : 1); // 3 strong, 2 moderate, 1 slight
         if (cloud > 4) ins = std::max(1, ins - 1);
         // rows: u < 2, 2-3, 3-5, 5-6, >= 6; columns: slight, moderate, strong
         static const int day[5][3] = {{B, B, A}, {C, B, B}, {C, C, B}, {D, D, C}, {D, D, C}};
@@ -37,7 +45,10 @@ int stabilityClass(double u, double cloud, double sun)
     return D;
 }
 
-char className(int cls) { return static_cast<char>('A' + cls - 1); }
+char className(int cls)
+{
+    return static_cast<char>('A' + cls - 1);
+}
 
 double ruralWindExponent(int cls)
 {
@@ -54,8 +65,8 @@ double verticalTerm(double z, double h, double sz, double zi)
     {
         for (int i = 1; i <= 50; ++i)
         {
-            const double t = g(z - (2 * i * zi - h)) + g(z + (2 * i * zi - h))
-                             + g(z - (2 * i * zi + h)) + g(z + (2 * i * zi + h));
+            const double t = g(z - (2 * i * zi - h)) + g(z + (2 * i * zi - h)) + g(z - (2 * i * zi + h))
+                             + g(z + (2 * i * zi + h));
             v += t;
             if (t < 1e-12 * v) break;
         }
@@ -69,8 +80,8 @@ struct GaussianModel::Element
 {
     double x, y, q, h;
     double sy0 = 0, sz0 = 0;
-    std::array<double, 7> xy{}, xz{};   // virtual distances per class
-    int group = 0;                      // depletion table group (source index)
+    std::array<double, 7> xy{}, xz{}; // virtual distances per class
+    int group = 0;                    // depletion table group (source index)
 };
 
 // Cumulative depletion integrals J(x) = sqrt(2/pi) int_1^x dxi / (sz e^{h^2/2sz^2})
@@ -78,8 +89,8 @@ struct GaussianModel::Element
 struct GaussianModel::Tables
 {
     static constexpr double x0 = 1.0, ratio = 1.05;
-    static constexpr int n = 300;   // up to 1.05^299 ~ 2e6 m
-    std::vector<std::array<std::vector<double>, 7>> j;   // [group][cls][k]
+    static constexpr int n = 300;                      // up to 1.05^299 ~ 2e6 m
+    std::vector<std::array<std::vector<double>, 7>> j; // [group][cls][k]
     double lookup(int group, int cls, double x) const
     {
         if (x <= x0) return 0.0;
@@ -244,7 +255,7 @@ double GaussianModel::concentration(const PlumeHour& hr, const Receptor& r) cons
 {
     const int cls = hr.cls;
     const double th = hr.directionFrom * M_PI / 180.0;
-    const double ex = -std::sin(th), ey = -std::cos(th);   // downwind unit vector
+    const double ex = -std::sin(th), ey = -std::cos(th); // downwind unit vector
     const bool lid = cls <= 4 || opt_.mixingLidStable;
     const double zi = lid ? hr.mixingHeight : 0.0;
     const double p = opt_.windExponent >= 0 ? opt_.windExponent : ruralWindExponent(cls);
@@ -252,10 +263,10 @@ double GaussianModel::concentration(const PlumeHour& hr, const Receptor& r) cons
     for (const auto& e : elements_)
     {
         const double dx = r.x - e.x, dy = r.y - e.y;
-        const double x = dx * ex + dy * ey;   // downwind distance
-        if (x < 1.0) continue;                // ISC: no contribution within 1 m or upwind
-        const double y = -dx * ey + dy * ex;  // crosswind
-        if (lid && e.h >= zi) continue;       // release above the mixing layer
+        const double x = dx * ex + dy * ey;  // downwind distance
+        if (x < 1.0) continue;               // ISC: no contribution within 1 m or upwind
+        const double y = -dx * ey + dy * ex; // crosswind
+        if (lid && e.h >= zi) continue;      // release above the mixing layer
         const double u = std::max(opt_.minWind, hr.u10 * std::pow(std::max(e.h, 10.0) / 10.0, p));
         double sy, sz;
         if (opt_.constantK)

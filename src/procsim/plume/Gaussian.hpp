@@ -47,17 +47,17 @@ double verticalTerm(double z, double h, double sigmaZ, double mixingHeight);
 struct GaussianOptions
 {
     double latitudeDeg = 14.5;
-    int startDayOfYear = 1;     // day of the first meteorology hour
-    double startHour = 0;       // local solar time of the first hour [h]; hour n covers n..n+1
-    double depositionVelocity = 0;   // v_d [m/s] (0 = no depletion)
+    int startDayOfYear = 1;        // day of the first meteorology hour
+    double startHour = 0;          // local solar time of the first hour [h]; hour n covers n..n+1
+    double depositionVelocity = 0; // v_d [m/s] (0 = no depletion)
     int areaSubdivisions = 10;
-    double minWind = 1.0;       // m/s, ISC's floor for the wind at release height
-    double windExponent = -1;   // power-law exponent to the release height; < 0: ISC rural by class
-    double reduction = 0;       // removed fraction of controlled emissions
-    std::string curves = "isc3_rural";   // a name of DispersionCurves::curveNames()
-    bool constantK = false;     // sigma^2 = 2 K x / u instead of the curves
+    double minWind = 1.0;              // m/s, ISC's floor for the wind at release height
+    double windExponent = -1;          // power-law exponent to the release height; < 0: ISC rural by class
+    double reduction = 0;              // removed fraction of controlled emissions
+    std::string curves = "isc3_rural"; // a name of DispersionCurves::curveNames()
+    bool constantK = false;            // sigma^2 = 2 K x / u instead of the curves
     double kH = 200, kV = 1;
-    bool mixingLidStable = false;   // ISC: no lid for E and F
+    bool mixingLidStable = false; // ISC: no lid for E and F
 };
 
 struct PlumeHour

@@ -9,8 +9,9 @@ namespace procsim::plume
 
 const std::vector<std::string>& gaussianSetupKeys()
 {
-    static const std::vector<std::string> keys = {"site", "deposition", "dispersion", "area_subdivisions",
-                                                  "reduction", "sources", "receptors", "output"};
+    static const std::vector<std::string> keys = {
+        "site",      "deposition", "dispersion", "area_subdivisions",
+        "reduction", "sources",    "receptors",  "output"};
     return keys;
 }
 
@@ -57,7 +58,8 @@ void readDispersion(const YamlInput& in, GaussianOptions& o)
         throw d.error("model", "one of " + known + "constant_k");
     }
     for (const char* k : {"K_H_m2_s", "K_V_m2_s"})
-        if (!o.constantK && d.has(k)) throw d.error(k, "no diffusivity: it is read for model constant_k only");
+        if (!o.constantK && d.has(k))
+            throw d.error(k, "no diffusivity: it is read for model constant_k only");
 }
 
 void readEmissionSettings(const YamlInput& in, GaussianOptions& o)

@@ -64,9 +64,9 @@ GaussianCase load(const std::string& casePath)
 // Every hour's conditions and the 1-h concentrations they give.
 struct GaussianRun
 {
-    std::vector<PlumeHour> conditions;           // per hour
-    std::vector<std::vector<double>> c;          // [receptor][hour], ug/m3
-    std::array<int, 7> classCount{};             // hours per stability class 1..6
+    std::vector<PlumeHour> conditions;  // per hour
+    std::vector<std::vector<double>> c; // [receptor][hour], ug/m3
+    std::array<int, 7> classCount{};    // hours per stability class 1..6
 
     int hours() const { return static_cast<int>(conditions.size()); }
     int days() const { return hours() / 24; }
@@ -90,7 +90,7 @@ GaussianRun run(const GaussianModel& model, const GaussianCase& cs)
         r.conditions.push_back(ph);
         ++r.classCount[ph.cls];
         for (std::size_t k = 0; k < receptors.size(); ++k)
-            r.c[k][h] = model.concentration(ph, receptors[k]) * 1e9;   // kg/m3 -> ug/m3
+            r.c[k][h] = model.concentration(ph, receptors[k]) * 1e9; // kg/m3 -> ug/m3
     }
     return r;
 }
@@ -104,15 +104,16 @@ std::vector<std::string> receptorColumns(const std::string& first, const std::ve
 
 void writeHourly(const std::string& path, const GaussianCase& cs, const GaussianRun& r)
 {
-    std::vector<std::string> header = {"hour", "class", "wind_speed_m_s", "wind_direction_deg", "mixing_height_m"};
+    std::vector<std::string> header = {"hour", "class", "wind_speed_m_s", "wind_direction_deg",
+                                       "mixing_height_m"};
     for (const auto& rc : cs.setup.receptors) header.push_back(rc.name + " [ug/m3]");
     CsvWriter hourly(path, header);
     for (int h = 0; h < r.hours(); ++h)
     {
         const PlumeHour& ph = r.conditions[h];
-        std::vector<std::string> row = {std::to_string(cs.met.firstHour + h), std::string(1, className(ph.cls)),
-                                        formatNumber(ph.u10), formatNumber(ph.directionFrom),
-                                        formatNumber(ph.mixingHeight)};
+        std::vector<std::string> row = {std::to_string(cs.met.firstHour + h),
+                                        std::string(1, className(ph.cls)), formatNumber(ph.u10),
+                                        formatNumber(ph.directionFrom), formatNumber(ph.mixingHeight)};
         for (const auto& ck : r.c) row.push_back(formatNumber(ck[h]));
         hourly.row(row);
     }
@@ -131,13 +132,15 @@ void writeDaily(const std::string& path, const GaussianCase& cs, const GaussianR
     daily.close();
 }
 
-void printHeader(const GaussianArgs& a, const GaussianModel& model, const GaussianCase& cs, const GaussianRun& r)
+void printHeader(const GaussianArgs& a, const GaussianModel& model, const GaussianCase& cs,
+                 const GaussianRun& r)
 {
     const GaussianOptions& o = cs.setup.options;
-    fmt::print("procsim plume gaussian: {}\n  {} h, {} sources, {} receptors, reduction {} %, deposition velocity {} "
-               "m/s, dispersion {}\n  hours per class:",
-               a.casePath, r.hours(), cs.setup.sources.size(), cs.setup.receptors.size(),
-               formatNumber(o.reduction * 100), formatNumber(o.depositionVelocity), model.dispersionTitle());
+    fmt::print(
+        "procsim plume gaussian: {}\n  {} h, {} sources, {} receptors, reduction {} %, deposition velocity {} "
+        "m/s, dispersion {}\n  hours per class:",
+        a.casePath, r.hours(), cs.setup.sources.size(), cs.setup.receptors.size(),
+        formatNumber(o.reduction * 100), formatNumber(o.depositionVelocity), model.dispersionTitle());
     for (int k = 1; k <= 6; ++k) fmt::print(" {} {}", className(k), r.classCount[k]);
     fmt::print("\n\n  {:<12}{:>12}{:>12}{:>12}   [ug/m3]\n", "receptor", "mean", "max 1-h", "max 24-h");
 }

@@ -41,7 +41,8 @@ MetSeries readMet(const std::string& path, bool full)
     MetSeries m;
     const double first = t.rows[0][ch];
     if (!(first >= 0 && first <= 1e8 && first == std::floor(first)))
-        throw InputError(path + ": column 'hour' expected a whole hour from 0 to 1e8, got " + formatNumber(first));
+        throw InputError(path + ": column 'hour' expected a whole hour from 0 to 1e8, got "
+                         + formatNumber(first));
     m.firstHour = static_cast<int>(first);
     for (std::size_t r = 0; r < t.rows.size(); ++r)
     {

@@ -16,18 +16,18 @@ namespace procsim::plume
 
 struct MetHour
 {
-    double speed = 0;          // m/s at 10 m
-    double directionFrom = 0;  // deg
+    double speed = 0;         // m/s at 10 m
+    double directionFrom = 0; // deg
     double temperatureC = 25;
-    double mixingHeight = 1000;   // m
+    double mixingHeight = 1000; // m
     double cloudOktas = 4;
-    int stability = 0;         // 1..6 (A..F), 0 = derive
+    int stability = 0; // 1..6 (A..F), 0 = derive
 };
 
 struct MetSeries
 {
     std::vector<MetHour> hours;
-    int firstHour = 0;   // value in the 'hour' column of the first row
+    int firstHour = 0; // value in the 'hour' column of the first row
 };
 
 // `full` = require temperature, mixing height and cloud cover as well.

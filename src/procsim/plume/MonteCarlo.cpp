@@ -20,7 +20,7 @@ double value(const MetHour& h, int v)
     {
     case kDirection: return h.directionFrom;
     case kSpeed: return h.speed;
-    case kTemperature: return h.temperatureC + 273.15;   // fitted in kelvin (always > 0)
+    case kTemperature: return h.temperatureC + 273.15; // fitted in kelvin (always > 0)
     case kMixingHeight: return h.mixingHeight;
     default: return h.cloudOktas;
     }
@@ -30,8 +30,8 @@ double value(const MetHour& h, int v)
 
 const char* metVariableName(int v)
 {
-    static const char* names[] = {"wind_direction_deg", "wind_speed_m_s", "temperature_K",
-                                  "mixing_height_m", "cloud_cover_oktas"};
+    static const char* names[] = {"wind_direction_deg", "wind_speed_m_s", "temperature_K", "mixing_height_m",
+                                  "cloud_cover_oktas"};
     return names[v];
 }
 
@@ -55,7 +55,8 @@ Climate fitClimate(const MetSeries& history, int startDay, double startHour)
         const int day = (startDay - 1 + static_cast<int>(hour / 24)) % 365 + 1;
         const int month = monthOfDay(day);
         const int block = static_cast<int>(std::fmod(hour, 24.0)) / 6;
-        for (int v = 0; v < kMetVariables; ++v) samples[v][month][block].push_back(value(history.hours[t], v));
+        for (int v = 0; v < kMetVariables; ++v)
+            samples[v][month][block].push_back(value(history.hours[t], v));
     }
     Climate c;
     for (int v = 0; v < kMetVariables; ++v)
@@ -66,8 +67,8 @@ Climate fitClimate(const MetSeries& history, int startDay, double startHour)
                 if (s.size() < 10)
                 {
                     throw InputError("history: month " + std::to_string(m + 1) + ", hours "
-                                     + std::to_string(6 * b) + "-" + std::to_string(6 * b + 6)
-                                     + " has only " + std::to_string(s.size())
+                                     + std::to_string(6 * b) + "-" + std::to_string(6 * b + 6) + " has only "
+                                     + std::to_string(s.size())
                                      + " values (give at least one full year of hourly meteorology)");
                 }
                 try
@@ -87,7 +88,7 @@ std::vector<MetHour> synthesiseYear(const Climate& c, double w, Stream& rng)
 {
     std::vector<MetHour> out(8760);
     std::array<double, kMetVariables> z{};
-    for (auto& v : z) v = rng.normal();   // stationary start
+    for (auto& v : z) v = rng.normal(); // stationary start
     const double s = std::sqrt(1 - w * w);
     for (int t = 0; t < 8760; ++t)
     {

@@ -21,7 +21,15 @@
 namespace procsim::plume
 {
 
-enum MetVariable { kDirection = 0, kSpeed, kTemperature, kMixingHeight, kCloud, kMetVariables };
+enum MetVariable
+{
+    kDirection = 0,
+    kSpeed,
+    kTemperature,
+    kMixingHeight,
+    kCloud,
+    kMetVariables
+};
 const char* metVariableName(int v);
 
 struct Climate
@@ -30,7 +38,7 @@ struct Climate
     std::array<std::array<std::array<GammaFit, 4>, 12>, kMetVariables> fit;
 };
 
-int monthOfDay(int dayOfYear);   // 0..11 for day 1..365
+int monthOfDay(int dayOfYear); // 0..11 for day 1..365
 
 // startDay/startHour: calendar position of the first history row.
 Climate fitClimate(const MetSeries& history, int startDay, double startHour);

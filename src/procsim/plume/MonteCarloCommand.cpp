@@ -33,7 +33,7 @@ namespace procsim::plume
 namespace
 {
 
-constexpr long maxYears = 100000;   // synthetic years: ~10 minutes per 1000 on one thread
+constexpr long maxYears = 100000; // synthetic years: ~10 minutes per 1000 on one thread
 constexpr int daysPerYear = 365, hoursPerYear = 8760;
 
 // ---- parse -------------------------------------------------------------------
@@ -42,7 +42,7 @@ struct MonteCarloArgs
 {
     std::string casePath;
     std::string outDir = "results";
-    std::optional<long> years, threads, seed;   // none: the case's
+    std::optional<long> years, threads, seed; // none: the case's
 };
 
 std::optional<MonteCarloArgs> parse(int argc, char** argv)
@@ -61,12 +61,12 @@ std::optional<MonteCarloArgs> parse(int argc, char** argv)
 struct MonteCarloCase
 {
     GaussianSetup setup;
-    int historyDay = 1;         // calendar position of the first history row
+    int historyDay = 1; // calendar position of the first history row
     double historyHour = 0;
     long years = 50;
-    double w = 0.5;             // weight of the previous hour's normal score
+    double w = 0.5; // weight of the previous hour's normal score
     unsigned long long seed = 2001;
-    std::vector<double> thresholds = {120, 150};   // ug/m3
+    std::vector<double> thresholds = {120, 150}; // ug/m3
     MetSeries history;
     Climate climate;
     unsigned threads = 1;
@@ -131,33 +131,40 @@ MonteCarloCase load(const MonteCarloArgs& a)
     in.rejectUnknown(keys);
     MonteCarloCase c;
     c.setup = parseGaussianSetup(in);
-    c.setup.options.startDayOfYear = 1;   // synthetic years start on 1 January, 0 h
+    c.setup.options.startDayOfYear = 1; // synthetic years start on 1 January, 0 h
     c.setup.options.startHour = 0;
     readHistoryStart(in, c);
     readSampling(in, a, c);
     readHistory(relativeTo(fs::path(a.casePath).parent_path().string(), in.text("history")), c);
     const std::size_t nr = c.setup.receptors.size();
-    checkMemory(static_cast<double>(c.years) * daysPerYear * static_cast<double>(nr), sizeof(double), a.casePath,
-                std::to_string(c.years) + " synthetic years of daily values at " + std::to_string(nr)
-                    + " receptors");
-    c.threads = static_cast<unsigned>(a.threads ? *a.threads : std::max(1u, std::thread::hardware_concurrency()));
+    checkMemory(
+        static_cast<double>(c.years) * daysPerYear * static_cast<double>(nr), sizeof(double), a.casePath,
+        std::to_string(c.years) + " synthetic years of daily values at " + std::to_string(nr) + " receptors");
+    c.threads =
+        static_cast<unsigned>(a.threads ? *a.threads : std::max(1u, std::thread::hardware_concurrency()));
     return c;
 }
 
 // ---- run ---------------------------------------------------------------------
 
-using Sectors = std::array<long, 8>;   // hours per 45-degree wind-direction sector
-using Speeds = std::array<long, 4>;    // hours per wind-speed class 0-2, 2-4, 4-6, > 6 m/s
+using Sectors = std::array<long, 8>; // hours per 45-degree wind-direction sector
+using Speeds = std::array<long, 4>;  // hours per wind-speed class 0-2, 2-4, 4-6, > 6 m/s
 
-int sectorOf(const MetHour& h) { return static_cast<int>(h.directionFrom / 45.0) % 8; }
-int speedClassOf(const MetHour& h) { return std::min(3, static_cast<int>(h.speed / 2.0)); }
+int sectorOf(const MetHour& h)
+{
+    return static_cast<int>(h.directionFrom / 45.0) % 8;
+}
+int speedClassOf(const MetHour& h)
+{
+    return std::min(3, static_cast<int>(h.speed / 2.0));
+}
 
 struct Realisations
 {
-    std::vector<std::vector<std::vector<double>>> daily;   // [year][receptor][day], ug/m3
-    std::vector<Sectors> sectors;                           // per year
+    std::vector<std::vector<std::vector<double>>> daily; // [year][receptor][day], ug/m3
+    std::vector<Sectors> sectors;                        // per year
     std::vector<Speeds> speeds;
-    std::vector<MetHour> firstYear;                         // the met of year 1, as an example
+    std::vector<MetHour> firstYear; // the met of year 1, as an example
     double wallSeconds = 0;
 };
 
@@ -213,7 +220,8 @@ double percentile(const std::vector<double>& sorted, double p)
 
 double fractionAbove(const std::vector<double>& values, double threshold)
 {
-    return static_cast<double>(std::count_if(values.begin(), values.end(), [&](double v) { return v > threshold; }))
+    return static_cast<double>(
+               std::count_if(values.begin(), values.end(), [&](double v) { return v > threshold; }))
            / values.size();
 }
 
@@ -224,7 +232,10 @@ double mean(const std::vector<double>& values)
     return m / values.size();
 }
 
-std::string blockHours(int b) { return std::to_string(6 * b) + "-" + std::to_string(6 * b + 6); }
+std::string blockHours(int b)
+{
+    return std::to_string(6 * b) + "-" + std::to_string(6 * b + 6);
+}
 
 void writeFits(const std::string& path, const Climate& climate)
 {
@@ -264,14 +275,14 @@ void reportWind(const std::string& path, const MonteCarloCase& c, const Realisat
     Speeds sp{};
     for (const auto& s : rs.speeds)
         for (int k = 0; k < 4; ++k) sp[k] += s[k];
-    fmt::print("  synthetic wind speed: 0-2 m/s {:.3f}, 2-4 {:.3f}, 4-6 {:.3f}, >6 {:.3f}\n", sp[0] / synHours,
-               sp[1] / synHours, sp[2] / synHours, sp[3] / synHours);
+    fmt::print("  synthetic wind speed: 0-2 m/s {:.3f}, 2-4 {:.3f}, 4-6 {:.3f}, >6 {:.3f}\n",
+               sp[0] / synHours, sp[1] / synHours, sp[2] / synHours, sp[3] / synHours);
 }
 
 std::vector<std::string> summaryHeader(const std::vector<double>& thresholds)
 {
-    std::vector<std::string> h = {"receptor", "mean [ug/m3]", "p5 24-h [ug/m3]", "p50 24-h [ug/m3]",
-                                  "p95 24-h [ug/m3]", "max 24-h [ug/m3]"};
+    std::vector<std::string> h = {"receptor",         "mean [ug/m3]",     "p5 24-h [ug/m3]",
+                                  "p50 24-h [ug/m3]", "p95 24-h [ug/m3]", "max 24-h [ug/m3]"};
     for (double th : thresholds)
     {
         h.push_back("P(24-h > " + formatNumber(th) + ")");
@@ -290,7 +301,7 @@ void printSummaryHeader(const std::vector<double>& thresholds)
 // One receptor over all years: its summary.csv row, and its line on stdout.
 std::vector<std::string> receptorSummary(std::size_t k, const MonteCarloCase& c, const Realisations& rs)
 {
-    std::vector<double> all;   // every simulated day
+    std::vector<double> all; // every simulated day
     all.reserve(static_cast<std::size_t>(c.years) * daysPerYear);
     std::vector<long> yearsOver(c.thresholds.size(), 0);
     for (long r = 0; r < c.years; ++r)
@@ -349,8 +360,8 @@ void writeTrend(const std::string& outDir, std::size_t k, const MonteCarloCase& 
         d.row(row);
     }
     d.close();
-    const std::string title = "Receptor " + name + ": " + std::to_string(c.years) + " synthetic years (w = "
-                              + formatNumber(c.w) + ")";
+    const std::string title = "Receptor " + name + ": " + std::to_string(c.years)
+                              + " synthetic years (w = " + formatNumber(c.w) + ")";
     plotPng((fs::path(outDir) / ("trend_" + name + ".png")).string(), texts::plots::trend,
             PlotVariables()
                 .set("csv", csv)
@@ -374,9 +385,10 @@ void report(const MonteCarloArgs& a, const MonteCarloCase& c, const Realisations
         writeTrend(a.outDir, k, c, rs);
     }
     summary.close();
-    fmt::print("\n  P(24h>X): fraction of all simulated days; P(year ...) in summary.csv\n  wall time {:.1f} s for "
-               "{} years; outputs in {}/\n",
-               rs.wallSeconds, c.years, a.outDir);
+    fmt::print(
+        "\n  P(24h>X): fraction of all simulated days; P(year ...) in summary.csv\n  wall time {:.1f} s for "
+        "{} years; outputs in {}/\n",
+        rs.wallSeconds, c.years, a.outDir);
 }
 
 } // namespace
@@ -387,10 +399,11 @@ int monteCarloCommand(int argc, char** argv)
     if (!args) return 0;
     const MonteCarloCase c = load(*args);
     const GaussianModel model(c.setup.sources, c.setup.options);
-    fmt::print("procsim plume montecarlo: {}\n  history {} h, {} synthetic years, w = {}, seed {}, {} threads, "
-               "reduction {} %\n",
-               args->casePath, c.history.hours.size(), c.years, formatNumber(c.w), c.seed, c.threads,
-               formatNumber(c.setup.options.reduction * 100));
+    fmt::print(
+        "procsim plume montecarlo: {}\n  history {} h, {} synthetic years, w = {}, seed {}, {} threads, "
+        "reduction {} %\n",
+        args->casePath, c.history.hours.size(), c.years, formatNumber(c.w), c.seed, c.threads,
+        formatNumber(c.setup.options.reduction * 100));
     createOutputDirectory(args->outDir);
     report(*args, c, run(c, model));
     return 0;

@@ -9,10 +9,10 @@ namespace
 {
 
 // Bounds that keep a site physical (and its arithmetic finite).
-constexpr double maxCoordinate = 1e7;   // m: 10 000 km from the origin
-constexpr double maxHeight = 1e4;       // m above the ground
-constexpr double maxSize = 1e5;         // m: a 100 km source
-constexpr double maxRate = 1e9;         // g/s
+constexpr double maxCoordinate = 1e7; // m: 10 000 km from the origin
+constexpr double maxHeight = 1e4;     // m above the ground
+constexpr double maxSize = 1e5;       // m: a 100 km source
+constexpr double maxRate = 1e9;       // g/s
 
 // size_m: [east-west, north-south] of an area or volume source
 void readSize(const YamlInput& it, Source& s)
@@ -64,13 +64,13 @@ std::vector<Source> parseSources(const YamlInput& list)
         }
         else if (type == "volume")
         {
-            it.rejectUnknown({"name", "type", "x_m", "y_m", "size_m", "bottom_m", "top_m", "rate_g_s", "controlled"});
+            it.rejectUnknown(
+                {"name", "type", "x_m", "y_m", "size_m", "bottom_m", "top_m", "rate_g_s", "controlled"});
             s.type = Source::Type::Volume;
             readSize(it, s);
             s.bottom = it.within("bottom_m", 0.0, 0, maxHeight, "m");
             s.top = it.within("top_m", 0, maxHeight, "m");
-            if (!(s.bottom >= 0 && s.top > s.bottom))
-                throw it.error("top_m", "a height above bottom_m [m]");
+            if (!(s.bottom >= 0 && s.top > s.bottom)) throw it.error("top_m", "a height above bottom_m [m]");
             s.height = 0.5 * (s.bottom + s.top);
         }
         else
@@ -79,7 +79,8 @@ std::vector<Source> parseSources(const YamlInput& list)
         }
         out.push_back(s);
     }
-    if (out.empty()) throw InputError(list.file() + ": key '" + list.path() + "' expected at least one source");
+    if (out.empty())
+        throw InputError(list.file() + ": key '" + list.path() + "' expected at least one source");
     rejectDuplicates(out, &Source::name, list.file() + ": key '" + list.path() + "'", "source name");
     return out;
 }
@@ -93,14 +94,15 @@ std::vector<Receptor> parseReceptors(const YamlInput& list)
         Receptor r;
         r.where = it.file() + ": " + it.path();
         r.name = it.text("name");
-        checkFileNamePart(r.name, it.file() + ": key '" + it.path() + ".name'");   // names result files
+        checkFileNamePart(r.name, it.file() + ": key '" + it.path() + ".name'"); // names result files
         r.x = it.within("x_m", -maxCoordinate, maxCoordinate, "m");
         r.y = it.within("y_m", -maxCoordinate, maxCoordinate, "m");
         r.height = it.within("height_m", 0.0, 0, maxHeight, "m");
         out.push_back(r);
     }
     rejectDuplicates(out, &Receptor::name, list.file() + ": key '" + list.path() + "'", "receptor name");
-    if (out.empty()) throw InputError(list.file() + ": key '" + list.path() + "' expected at least one receptor");
+    if (out.empty())
+        throw InputError(list.file() + ": key '" + list.path() + "' expected at least one receptor");
     return out;
 }
 

@@ -19,22 +19,27 @@ namespace procsim::plume
 
 struct Source
 {
-    enum class Type { Point, Area, Volume };
+    enum class Type
+    {
+        Point,
+        Area,
+        Volume
+    };
     std::string name;
     Type type = Type::Area;
-    double x = 0, y = 0;          // centre [m]
-    double lx = 0, ly = 0;        // horizontal size [m] (area, volume)
-    double height = 0;            // release height above ground (point, area) [m]
-    double bottom = 0, top = 0;   // vertical extent above ground (volume) [m]
-    double rate = 0;              // emission [kg/s]
-    bool controlled = true;       // subject to the scenario's emission reduction
-    std::string where;            // "file: sources[2]" for messages
+    double x = 0, y = 0;        // centre [m]
+    double lx = 0, ly = 0;      // horizontal size [m] (area, volume)
+    double height = 0;          // release height above ground (point, area) [m]
+    double bottom = 0, top = 0; // vertical extent above ground (volume) [m]
+    double rate = 0;            // emission [kg/s]
+    bool controlled = true;     // subject to the scenario's emission reduction
+    std::string where;          // "file: sources[2]" for messages
 };
 
 struct Receptor
 {
     std::string name;
-    double x = 0, y = 0, height = 0;   // m, height above ground
+    double x = 0, y = 0, height = 0; // m, height above ground
     std::string where;
 };
 

@@ -47,7 +47,8 @@ std::string lower(std::string s)
 EsriGrid readEsriGrid(const std::string& path)
 {
     std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) throw InputError(path + ": is a directory, expected a terrain grid file");
+    if (std::filesystem::is_directory(path, ec))
+        throw InputError(path + ": is a directory, expected a terrain grid file");
     std::ifstream in(path);
     if (!in) throw InputError(path + ": cannot be read (missing terrain file?)");
 
@@ -82,13 +83,15 @@ EsriGrid readEsriGrid(const std::string& path)
         if (!parsed || (ss >> extra))
         {
             throw InputError(path + ": line " + std::to_string(lineNo) + ": header key '" + key
-                             + "' expected a finite number, got '" + text + (extra.empty() ? "" : " " + extra) + "'");
+                             + "' expected a finite number, got '" + text + (extra.empty() ? "" : " " + extra)
+                             + "'");
         }
         const double value = *parsed;
         const std::string k = lower(key);
         if (!seenKeys.insert(k).second)
         {
-            throw InputError(path + ": line " + std::to_string(lineNo) + ": header key '" + key + "' is given twice");
+            throw InputError(path + ": line " + std::to_string(lineNo) + ": header key '" + key
+                             + "' is given twice");
         }
         if (k == "ncols" || k == "nrows")
         {
@@ -100,23 +103,50 @@ EsriGrid readEsriGrid(const std::string& path)
             }
             (k == "ncols" ? g.ncols : g.nrows) = static_cast<int>(*n);
         }
-        else if (k == "xllcorner") { g.xll = value; haveX = true; }
-        else if (k == "yllcorner") { g.yll = value; haveY = true; }
-        else if (k == "xllcenter") { g.xll = value; haveX = true; centre = true; }
-        else if (k == "yllcenter") { g.yll = value; haveY = true; centre = true; }
-        else if (k == "cellsize") { g.cell = value; haveCell = true; }
-        else if (k == "nodata_value") { nodata = value; haveNodata = true; }
+        else if (k == "xllcorner")
+        {
+            g.xll = value;
+            haveX = true;
+        }
+        else if (k == "yllcorner")
+        {
+            g.yll = value;
+            haveY = true;
+        }
+        else if (k == "xllcenter")
+        {
+            g.xll = value;
+            haveX = true;
+            centre = true;
+        }
+        else if (k == "yllcenter")
+        {
+            g.yll = value;
+            haveY = true;
+            centre = true;
+        }
+        else if (k == "cellsize")
+        {
+            g.cell = value;
+            haveCell = true;
+        }
+        else if (k == "nodata_value")
+        {
+            nodata = value;
+            haveNodata = true;
+        }
         else
         {
-            throw InputError(path + ": line " + std::to_string(lineNo) + ": unknown header key '"
-                             + key + "' (expected ncols, nrows, xllcorner, yllcorner, cellsize, "
-                             "NODATA_value)");
+            throw InputError(path + ": line " + std::to_string(lineNo) + ": unknown header key '" + key
+                             + "' (expected ncols, nrows, xllcorner, yllcorner, cellsize, "
+                               "NODATA_value)");
         }
     }
     if (g.ncols < 2 || g.nrows < 2)
         throw InputError(path + ": header expected ncols and nrows >= 2 (ESRI ASCII grid)");
     if (!haveX || !haveY) throw InputError(path + ": header expected xllcorner and yllcorner");
-    if (!haveCell || !(g.cell > 0 && g.cell <= 1e5)) throw InputError(path + ": header expected cellsize > 0 and up to 1e5 m");
+    if (!haveCell || !(g.cell > 0 && g.cell <= 1e5))
+        throw InputError(path + ": header expected cellsize > 0 and up to 1e5 m");
     if (!(std::fabs(g.xll) <= 1e7 && std::fabs(g.yll) <= 1e7))
         throw InputError(path + ": header expected xllcorner and yllcorner within 1e7 m of the origin");
     if (centre)
@@ -126,12 +156,12 @@ EsriGrid readEsriGrid(const std::string& path)
     }
     if (dataLine == 0) throw InputError(path + ": no elevation rows after the header");
 
-    checkMemory(static_cast<double>(g.ncols) * g.nrows, 2 * sizeof(double), path, "a terrain grid of "
-                + std::to_string(g.ncols) + " x " + std::to_string(g.nrows) + " cells");
+    checkMemory(static_cast<double>(g.ncols) * g.nrows, 2 * sizeof(double), path,
+                "a terrain grid of " + std::to_string(g.ncols) + " x " + std::to_string(g.nrows) + " cells");
     in.clear();
     in.seekg(dataStart);
     lineNo = dataLine - 1;
-    std::vector<double> rows;   // as written: north first
+    std::vector<double> rows; // as written: north first
     rows.reserve(static_cast<std::size_t>(g.ncols) * g.nrows);
     int rowCount = 0;
     while (std::getline(in, line))
@@ -165,8 +195,7 @@ EsriGrid readEsriGrid(const std::string& path)
         if (n != g.ncols)
         {
             throw InputError(path + ": line " + std::to_string(lineNo) + ": expected "
-                             + std::to_string(g.ncols) + " values (ncols), got "
-                             + std::to_string(n));
+                             + std::to_string(g.ncols) + " values (ncols), got " + std::to_string(n));
         }
     }
     if (rowCount != g.nrows)
@@ -189,8 +218,8 @@ void writeEsriGrid(const std::string& path, const EsriGrid& g)
 {
     OutputFile file(path);
     std::ostream& out = file.out();
-    out << "ncols " << g.ncols << "\nnrows " << g.nrows << "\nxllcorner " << g.xll
-        << "\nyllcorner " << g.yll << "\ncellsize " << g.cell << "\nNODATA_value -9999\n";
+    out << "ncols " << g.ncols << "\nnrows " << g.nrows << "\nxllcorner " << g.xll << "\nyllcorner " << g.yll
+        << "\ncellsize " << g.cell << "\nNODATA_value -9999\n";
     out << std::fixed << std::setprecision(2);
     for (int r = g.nrows - 1; r >= 0; --r)
     {

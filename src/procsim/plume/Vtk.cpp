@@ -67,8 +67,8 @@ void writeVts(const std::string& path, const TerrainGrid& g, const std::string& 
               const std::vector<double>& v)
 {
     if (v.size() != g.size())
-        throw std::logic_error(path + ": " + std::to_string(v.size()) + " cell values for a grid of " +
-                               std::to_string(g.size()) + " cells");
+        throw std::logic_error(path + ": " + std::to_string(v.size()) + " cell values for a grid of "
+                               + std::to_string(g.size()) + " cells");
     vtkNew<vtkStructuredGrid> grid;
     grid->SetDimensions(g.nx + 1, g.ny + 1, g.nz + 1);
     grid->SetPoints(cornerPoints(g));
