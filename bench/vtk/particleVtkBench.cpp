@@ -110,7 +110,8 @@ double bestSeconds(int repeat, Write write)
     {
         const auto start = std::chrono::steady_clock::now();
         write();
-        best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        best =
+            std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     }
     return best;
 }
@@ -130,9 +131,12 @@ int main(int argc, char** argv)
     for (int a = 1; a < argc; ++a)
     {
         const std::string arg = argv[a];
-        if (arg == "--repeat" && a + 1 < argc) repeat = std::stoi(argv[++a]);
-        else if (arg == "--dir" && a + 1 < argc) dir = argv[++a];
-        else input = arg;
+        if (arg == "--repeat" && a + 1 < argc)
+            repeat = std::stoi(argv[++a]);
+        else if (arg == "--dir" && a + 1 < argc)
+            dir = argv[++a];
+        else
+            input = arg;
     }
     const Frame frame = input.empty() ? randomFrame(26000) : readFrame(input);
     fs::create_directories(dir);
@@ -141,9 +145,8 @@ int main(int argc, char** argv)
     if (!input.empty()) std::cout << "input file: " << fs::file_size(input) / 1e6 << " MB\n";
 
     const ParticleVtkSeries series(dir.string(), "particles");
-    const double binary = bestSeconds(repeat, [&] {
-        series.write(1.0, "1", frame.particles, frame.vectors, frame.scalars);
-    });
+    const double binary =
+        bestSeconds(repeat, [&] { series.write(1.0, "1", frame.particles, frame.vectors, frame.scalars); });
     report("binary zlib appended (ParticleVtkSeries)", dir / "particles_1.vtp", binary);
 
     // the same data set through VTK's ASCII mode, for comparison
