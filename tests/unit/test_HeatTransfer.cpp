@@ -23,226 +23,266 @@
 
 using namespace spoutlab;
 
-namespace {
+namespace
+{
 
 const GasThermalProperties air{1.0324, 2.029e-5, 1008.6, 0.02917};
 const double d = 8e-3;
 
-HeatTransferCell cell(double eps, double slip, Vec3 centre = {}) { return {centre, eps, d, slip}; }
+HeatTransferCell cell(double eps, double slip, Vec3 centre = {})
+{
+    return {centre, eps, d, slip};
+}
 const HeatTransferCell spoutCell = cell(0.95, 15.0);
 const HeatTransferCell downcomerCell = cell(0.45, 0.7);
 
-std::unique_ptr<HeatTransferModel> make(const std::string& name, Parameters p = Parameters("test")) {
-  return HeatTransferModel::New(name, p);
+std::unique_ptr<HeatTransferModel> make(const std::string& name, Parameters p = Parameters("test"))
+{
+    return HeatTransferModel::New(name, p);
 }
 
-double h(const std::string& name, const HeatTransferCell& c) { return make(name)->h(c, air); }
-
-void expectRel(double value, double expected, double tol) {
-  EXPECT_LT(std::fabs(value - expected), tol * std::fabs(expected)) << value << " vs " << expected;
+double h(const std::string& name, const HeatTransferCell& c)
+{
+    return make(name)->h(c, air);
 }
 
-}  // namespace
+void expectRel(double value, double expected, double tol)
+{
+    EXPECT_LT(std::fabs(value - expected), tol * std::fabs(expected)) << value << " vs " << expected;
+}
+
+} // namespace
 
 // --- helpers -------------------------------------------------------------------
 
-TEST(HeatTransferHelpers, ReynoldsAndPrandtlByHand) {
-  expectRel(heatTransferReynolds(spoutCell, air), 5800.57, 1e-6);
-  expectRel(heatTransferReynolds(downcomerCell, air), 128.223, 1e-5);
-  EXPECT_EQ(heatTransferReynolds(cell(0.6, 0.0), air), 0.0);
-  expectRel(air.prandtl(), 0.701560, 1e-6);
+TEST(HeatTransferHelpers, ReynoldsAndPrandtlByHand)
+{
+    expectRel(heatTransferReynolds(spoutCell, air), 5800.57, 1e-6);
+    expectRel(heatTransferReynolds(downcomerCell, air), 128.223, 1e-5);
+    EXPECT_EQ(heatTransferReynolds(cell(0.6, 0.0), air), 0.0);
+    expectRel(air.prandtl(), 0.701560, 1e-6);
 }
 
 // --- Ranz-Marshall ---------------------------------------------------------------
 
-TEST(RanzMarshall, SpoutAndDowncomerByHand) {
-  // Spout: sqrt(5800.57) = 76.1615, Nu = 2 + 0.6 0.888563 76.1615 = 2 + 40.6046 = 42.6046,
-  //        h = 42.6046 3.64625 = 155.347
-  expectRel(h("RanzMarshall", spoutCell), 155.347, 1e-5);
-  // Downcomer: sqrt(128.223) = 11.3236, Nu = 2 + 0.533138 11.3236 = 8.03702,
-  //            h = 8.03702 3.64625 = 29.3050
-  expectRel(h("RanzMarshall", downcomerCell), 29.3050, 1e-5);
+TEST(RanzMarshall, SpoutAndDowncomerByHand)
+{
+    // Spout: sqrt(5800.57) = 76.1615, Nu = 2 + 0.6 0.888563 76.1615 = 2 + 40.6046 = 42.6046,
+    //        h = 42.6046 3.64625 = 155.347
+    expectRel(h("RanzMarshall", spoutCell), 155.347, 1e-5);
+    // Downcomer: sqrt(128.223) = 11.3236, Nu = 2 + 0.533138 11.3236 = 8.03702,
+    //            h = 8.03702 3.64625 = 29.3050
+    expectRel(h("RanzMarshall", downcomerCell), 29.3050, 1e-5);
 }
 
-TEST(RanzMarshall, ZeroSlipIsConductionNuTwo) {
-  // Nu -> 2: h = 2 k_c/d = 7.2925, whatever the voidage.
-  expectRel(h("RanzMarshall", cell(0.95, 0.0)), 7.2925, 1e-12);
-  expectRel(h("RanzMarshall", cell(0.45, 0.0)), 7.2925, 1e-12);
-  // Just above zero slip it is still 2 to first order: Re = 6.7e-7, Nu - 2 = 4.4e-4.
-  expectRel(h("RanzMarshall", cell(0.45, 1e-9)), 7.2925, 1e-3);
+TEST(RanzMarshall, ZeroSlipIsConductionNuTwo)
+{
+    // Nu -> 2: h = 2 k_c/d = 7.2925, whatever the voidage.
+    expectRel(h("RanzMarshall", cell(0.95, 0.0)), 7.2925, 1e-12);
+    expectRel(h("RanzMarshall", cell(0.45, 0.0)), 7.2925, 1e-12);
+    // Just above zero slip it is still 2 to first order: Re = 6.7e-7, Nu - 2 = 4.4e-4.
+    expectRel(h("RanzMarshall", cell(0.45, 1e-9)), 7.2925, 1e-3);
 }
 
 // --- Sartori ---------------------------------------------------------------------
 
-TEST(Sartori, SpoutAndDowncomerByHand) {
-  // 1.54 Pr^(1/3) = 1.54 0.888563 = 1.368387
-  // Spout: 5800.57^0.57 = exp(0.57 8.66572) = 139.694, Nu = 1.368387 139.694 = 191.156,
-  //        h = 191.156 3.64625 = 697.001
-  expectRel(h("Sartori", spoutCell), 697.001, 1e-5);
-  // Downcomer: 128.223^0.57 = exp(0.57 4.85377) = 15.9053, Nu = 21.7646, h = 79.3590
-  expectRel(h("Sartori", downcomerCell), 79.3590, 1e-5);
+TEST(Sartori, SpoutAndDowncomerByHand)
+{
+    // 1.54 Pr^(1/3) = 1.54 0.888563 = 1.368387
+    // Spout: 5800.57^0.57 = exp(0.57 8.66572) = 139.694, Nu = 1.368387 139.694 = 191.156,
+    //        h = 191.156 3.64625 = 697.001
+    expectRel(h("Sartori", spoutCell), 697.001, 1e-5);
+    // Downcomer: 128.223^0.57 = exp(0.57 4.85377) = 15.9053, Nu = 21.7646, h = 79.3590
+    expectRel(h("Sartori", downcomerCell), 79.3590, 1e-5);
 }
 
-TEST(Sartori, ZeroSlipGivesZero) {
-  // No conduction term: Re^0.57 = 0.
-  EXPECT_EQ(h("Sartori", cell(0.45, 0.0)), 0.0);
+TEST(Sartori, ZeroSlipGivesZero)
+{
+    // No conduction term: Re^0.57 = 0.
+    EXPECT_EQ(h("Sartori", cell(0.45, 0.0)), 0.0);
 }
 
 // --- Gunn ------------------------------------------------------------------------
 
-TEST(Gunn, SpoutAndDowncomerByHand) {
-  // eps 0.95: a = 7 - 9.5 + 4.5125 = 2.0125, b = 1.33 - 2.28 + 1.083 = 0.133
-  //   Re^0.2 = 5.65841, Re^0.7 = 430.953
-  //   Nu = 2.0125 (1 + 0.7 5.65841 0.888563) + 0.133 430.953 0.888563
-  //      = 2.0125 4.51949 + 50.9295 = 9.09547 + 50.9295 = 60.0250, h = 218.866
-  expectRel(h("Gunn", spoutCell), 218.866, 1e-5);
-  // eps 0.45: a = 7 - 4.5 + 1.0125 = 3.5125, b = 1.33 - 1.08 + 0.243 = 0.493
-  //   Re^0.2 = 2.63994, Re^0.7 = 29.8935
-  //   Nu = 3.5125 (1 + 0.7 2.63994 0.888563) + 0.493 29.8935 0.888563
-  //      = 3.5125 2.64202 + 13.0952 = 9.28010 + 13.0952 = 22.3753, h = 81.5859
-  expectRel(h("Gunn", downcomerCell), 81.5859, 1e-5);
+TEST(Gunn, SpoutAndDowncomerByHand)
+{
+    // eps 0.95: a = 7 - 9.5 + 4.5125 = 2.0125, b = 1.33 - 2.28 + 1.083 = 0.133
+    //   Re^0.2 = 5.65841, Re^0.7 = 430.953
+    //   Nu = 2.0125 (1 + 0.7 5.65841 0.888563) + 0.133 430.953 0.888563
+    //      = 2.0125 4.51949 + 50.9295 = 9.09547 + 50.9295 = 60.0250, h = 218.866
+    expectRel(h("Gunn", spoutCell), 218.866, 1e-5);
+    // eps 0.45: a = 7 - 4.5 + 1.0125 = 3.5125, b = 1.33 - 1.08 + 0.243 = 0.493
+    //   Re^0.2 = 2.63994, Re^0.7 = 29.8935
+    //   Nu = 3.5125 (1 + 0.7 2.63994 0.888563) + 0.493 29.8935 0.888563
+    //      = 3.5125 2.64202 + 13.0952 = 9.28010 + 13.0952 = 22.3753, h = 81.5859
+    expectRel(h("Gunn", downcomerCell), 81.5859, 1e-5);
 }
 
-TEST(Gunn, ZeroSlipLimits) {
-  // eps = 1, Re = 0: a = 7 - 10 + 5 = 2, so Nu = 2, the single sphere.
-  expectRel(h("Gunn", cell(1.0, 0.0)), 7.2925, 1e-12);
-  // eps 0.45, Re = 0: Nu = a = 3.5125, h = 3.5125 3.64625 = 12.8075
-  expectRel(h("Gunn", cell(0.45, 0.0)), 12.8075, 1e-5);
+TEST(Gunn, ZeroSlipLimits)
+{
+    // eps = 1, Re = 0: a = 7 - 10 + 5 = 2, so Nu = 2, the single sphere.
+    expectRel(h("Gunn", cell(1.0, 0.0)), 7.2925, 1e-12);
+    // eps 0.45, Re = 0: Nu = a = 3.5125, h = 3.5125 3.64625 = 12.8075
+    expectRel(h("Gunn", cell(0.45, 0.0)), 12.8075, 1e-5);
 }
 
 // --- selection ---------------------------------------------------------------------
 
-TEST(HeatTransferModels, SelectedByName) {
-  const auto names = HeatTransferModel::available();
-  EXPECT_EQ(names,
-            (std::vector<std::string>{"Gunn", "RanzMarshall", "Sartori", "spoutDowncomer"}));
-  for (const char* n : {"RanzMarshall", "Sartori", "Gunn"}) {
-    auto m = make(n);
-    EXPECT_EQ(m->name(), n);
-    EXPECT_EQ(m->region(spoutCell), -1) << n;  // one correlation everywhere
-  }
+TEST(HeatTransferModels, SelectedByName)
+{
+    const auto names = HeatTransferModel::available();
+    EXPECT_EQ(names, (std::vector<std::string>{"Gunn", "RanzMarshall", "Sartori", "spoutDowncomer"}));
+    for (const char* n : {"RanzMarshall", "Sartori", "Gunn"})
+    {
+        auto m = make(n);
+        EXPECT_EQ(m->name(), n);
+        EXPECT_EQ(m->region(spoutCell), -1) << n; // one correlation everywhere
+    }
 }
 
-TEST(HeatTransferModels, UnknownNameListsTheChoices) {
-  try {
-    make("Whitaker", Parameters("constant/couplingProperties/WhitakerProps"));
-    FAIL() << "no InputError";
-  } catch (const InputError& e) {
-    EXPECT_STREQ(e.what(),
-                 "constant/couplingProperties: key 'heatTransferModel' expected one of Gunn, "
-                 "RanzMarshall, Sartori, spoutDowncomer, got 'Whitaker'");
-  }
+TEST(HeatTransferModels, UnknownNameListsTheChoices)
+{
+    try
+    {
+        make("Whitaker", Parameters("constant/couplingProperties/WhitakerProps"));
+        FAIL() << "no InputError";
+    }
+    catch (const InputError& e)
+    {
+        EXPECT_STREQ(e.what(), "constant/couplingProperties: key 'heatTransferModel' expected one of Gunn, "
+                               "RanzMarshall, Sartori, spoutDowncomer, got 'Whitaker'");
+    }
 }
 
 // --- spoutDowncomer -----------------------------------------------------------------
 
-namespace {
+namespace
+{
 
 // Draft-plate vessel: plates' inner faces at x = +-0.0275, their upper edge
 // (the fountain base) at z = 0.912.
-Parameters geometryProps() {
-  Parameters p("couplingProperties/spoutDowncomerProps");
-  p.set("region", "geometry").set("spoutHalfWidth", "0.0275").set("fountainBase", "0.912");
-  return p;
+Parameters geometryProps()
+{
+    Parameters p("couplingProperties/spoutDowncomerProps");
+    p.set("region", "geometry").set("spoutHalfWidth", "0.0275").set("fountainBase", "0.912");
+    return p;
 }
 
-Parameters voidageProps(const std::string& threshold = "0.8") {
-  Parameters p("couplingProperties/spoutDowncomerProps");
-  p.set("region", "voidage").set("spoutVoidage", threshold);
-  return p;
+Parameters voidageProps(const std::string& threshold = "0.8")
+{
+    Parameters p("couplingProperties/spoutDowncomerProps");
+    p.set("region", "voidage").set("spoutVoidage", threshold);
+    return p;
 }
 
-}  // namespace
+} // namespace
 
-TEST(SpoutDowncomer, GeometryRuleOnADraftPlateVessel) {
-  // 90 x 50 cells over x in [-0.2475, 0.2475], z in [0, 1.2]: dx = 0.0055,
-  // dz = 0.024, centres x_i = -0.2475 + 0.0055 (i + 1/2), z_j = 0.024 (j + 1/2).
-  // |x_i| <= 0.0275 for i = 40..49 (|x| = 0.00275 ... 0.02475, the next 0.03025);
-  // z_j >= 0.912 for j = 38..49 (z_37 = 0.900, z_38 = 0.924).
-  // Spout: 10 columns x 50 rows + 80 columns x 12 rows = 500 + 960 = 1460.
-  auto rule = make("spoutDowncomer", geometryProps());
-  for (const HeatTransferCell& state : {spoutCell, downcomerCell}) {
-    const double hSpout = h("RanzMarshall", state), hDown = h("Sartori", state);
-    int spoutCells = 0;
-    for (int i = 0; i < 90; ++i) {
-      for (int j = 0; j < 50; ++j) {
-        HeatTransferCell c = state;
-        c.centre = {-0.2475 + 0.0055 * (i + 0.5), 0.0, 0.024 * (j + 0.5)};
-        const bool spout = (i >= 40 && i <= 49) || j >= 38;
-        EXPECT_EQ(rule->region(c), spout ? 1 : 0) << i << ", " << j;
-        EXPECT_EQ(rule->h(c, air), spout ? hSpout : hDown) << i << ", " << j;
-        spoutCells += rule->region(c);
-      }
+TEST(SpoutDowncomer, GeometryRuleOnADraftPlateVessel)
+{
+    // 90 x 50 cells over x in [-0.2475, 0.2475], z in [0, 1.2]: dx = 0.0055,
+    // dz = 0.024, centres x_i = -0.2475 + 0.0055 (i + 1/2), z_j = 0.024 (j + 1/2).
+    // |x_i| <= 0.0275 for i = 40..49 (|x| = 0.00275 ... 0.02475, the next 0.03025);
+    // z_j >= 0.912 for j = 38..49 (z_37 = 0.900, z_38 = 0.924).
+    // Spout: 10 columns x 50 rows + 80 columns x 12 rows = 500 + 960 = 1460.
+    auto rule = make("spoutDowncomer", geometryProps());
+    for (const HeatTransferCell& state : {spoutCell, downcomerCell})
+    {
+        const double hSpout = h("RanzMarshall", state), hDown = h("Sartori", state);
+        int spoutCells = 0;
+        for (int i = 0; i < 90; ++i)
+        {
+            for (int j = 0; j < 50; ++j)
+            {
+                HeatTransferCell c = state;
+                c.centre = {-0.2475 + 0.0055 * (i + 0.5), 0.0, 0.024 * (j + 0.5)};
+                const bool spout = (i >= 40 && i <= 49) || j >= 38;
+                EXPECT_EQ(rule->region(c), spout ? 1 : 0) << i << ", " << j;
+                EXPECT_EQ(rule->h(c, air), spout ? hSpout : hDown) << i << ", " << j;
+                spoutCells += rule->region(c);
+            }
+        }
+        EXPECT_EQ(spoutCells, 1460);
     }
-    EXPECT_EQ(spoutCells, 1460);
-  }
 }
 
-TEST(SpoutDowncomer, GeometryBoundariesAndAxis) {
-  auto rule = make("spoutDowncomer", geometryProps());
-  EXPECT_EQ(rule->region(cell(0.45, 0.7, {0.0275, 0.0, 0.5})), 1);   // on the plate's face
-  EXPECT_EQ(rule->region(cell(0.45, 0.7, {-0.0276, 0.0, 0.5})), 0);  // just behind it
-  EXPECT_EQ(rule->region(cell(0.45, 0.7, {0.2, 0.0, 0.912})), 1);    // at the fountain base
-  EXPECT_EQ(rule->region(cell(0.45, 0.7, {0.2, 0.0, 0.911})), 0);
-  // The voidage plays no part: a dilute cell behind the plates is downcomer.
-  EXPECT_EQ(rule->region(cell(0.99, 15.0, {0.2, 0.0, 0.5})), 0);
+TEST(SpoutDowncomer, GeometryBoundariesAndAxis)
+{
+    auto rule = make("spoutDowncomer", geometryProps());
+    EXPECT_EQ(rule->region(cell(0.45, 0.7, {0.0275, 0.0, 0.5})), 1);  // on the plate's face
+    EXPECT_EQ(rule->region(cell(0.45, 0.7, {-0.0276, 0.0, 0.5})), 0); // just behind it
+    EXPECT_EQ(rule->region(cell(0.45, 0.7, {0.2, 0.0, 0.912})), 1);   // at the fountain base
+    EXPECT_EQ(rule->region(cell(0.45, 0.7, {0.2, 0.0, 0.911})), 0);
+    // The voidage plays no part: a dilute cell behind the plates is downcomer.
+    EXPECT_EQ(rule->region(cell(0.99, 15.0, {0.2, 0.0, 0.5})), 0);
 
-  Parameters shifted = geometryProps();
-  shifted.set("spoutAxis", "0.1").set("spoutHalfWidth", "0.02");
-  auto off = make("spoutDowncomer", shifted);
-  EXPECT_EQ(off->region(cell(0.45, 0.7, {0.115, 0.0, 0.5})), 1);
-  EXPECT_EQ(off->region(cell(0.45, 0.7, {0.0, 0.0, 0.5})), 0);
+    Parameters shifted = geometryProps();
+    shifted.set("spoutAxis", "0.1").set("spoutHalfWidth", "0.02");
+    auto off = make("spoutDowncomer", shifted);
+    EXPECT_EQ(off->region(cell(0.45, 0.7, {0.115, 0.0, 0.5})), 1);
+    EXPECT_EQ(off->region(cell(0.45, 0.7, {0.0, 0.0, 0.5})), 0);
 }
 
-TEST(SpoutDowncomer, VoidageRule) {
-  auto rule = make("spoutDowncomer", voidageProps("0.8"));
-  EXPECT_EQ(rule->region(cell(0.8, 1.0)), 1);  // the threshold counts as spout
-  EXPECT_EQ(rule->region(cell(0.79, 1.0)), 0);
-  EXPECT_EQ(rule->region(spoutCell), 1);
-  EXPECT_EQ(rule->region(downcomerCell), 0);
-  // The hand values above: Ranz-Marshall in the spout, Sartori in the downcomer.
-  expectRel(rule->h(spoutCell, air), 155.347, 1e-5);
-  expectRel(rule->h(downcomerCell, air), 79.3590, 1e-5);
+TEST(SpoutDowncomer, VoidageRule)
+{
+    auto rule = make("spoutDowncomer", voidageProps("0.8"));
+    EXPECT_EQ(rule->region(cell(0.8, 1.0)), 1); // the threshold counts as spout
+    EXPECT_EQ(rule->region(cell(0.79, 1.0)), 0);
+    EXPECT_EQ(rule->region(spoutCell), 1);
+    EXPECT_EQ(rule->region(downcomerCell), 0);
+    // The hand values above: Ranz-Marshall in the spout, Sartori in the downcomer.
+    expectRel(rule->h(spoutCell, air), 155.347, 1e-5);
+    expectRel(rule->h(downcomerCell, air), 79.3590, 1e-5);
 }
 
-TEST(SpoutDowncomer, SubModelsAreChosenByName) {
-  Parameters p = voidageProps();
-  p.set("spout", "Gunn").set("downcomer", "RanzMarshall");
-  auto rule = make("spoutDowncomer", p);
-  expectRel(rule->h(spoutCell, air), 218.866, 1e-5);
-  expectRel(rule->h(downcomerCell, air), 29.3050, 1e-5);
+TEST(SpoutDowncomer, SubModelsAreChosenByName)
+{
+    Parameters p = voidageProps();
+    p.set("spout", "Gunn").set("downcomer", "RanzMarshall");
+    auto rule = make("spoutDowncomer", p);
+    expectRel(rule->h(spoutCell, air), 218.866, 1e-5);
+    expectRel(rule->h(downcomerCell, air), 29.3050, 1e-5);
 }
 
-TEST(SpoutDowncomer, BadParametersNameTheKey) {
-  Parameters missingWidth("couplingProperties/spoutDowncomerProps");
-  missingWidth.set("region", "geometry").set("fountainBase", "0.912");
-  Parameters zeroWidth = geometryProps();
-  zeroWidth.set("spoutHalfWidth", "0");
-  Parameters missingBase("couplingProperties/spoutDowncomerProps");
-  missingBase.set("region", "geometry").set("spoutHalfWidth", "0.0275");
-  Parameters nonsense = voidageProps();
-  nonsense.set("region", "nonsense");
-  Parameters noRegion("couplingProperties/spoutDowncomerProps");
-  Parameters nested = voidageProps();
-  nested.set("spout", "spoutDowncomer");
-  Parameters unknownSub = voidageProps();
-  unknownSub.set("downcomer", "Whitaker");
-  const std::pair<Parameters, const char*> cases[] = {
-      {missingWidth, "spoutHalfWidth"}, {zeroWidth, "spoutHalfWidth"},
-      {missingBase, "fountainBase"},    {nonsense, "region"},
-      {noRegion, "region"},             {voidageProps("1.5"), "spoutVoidage"},
-      {voidageProps("0"), "spoutVoidage"}, {nested, "spout"},
-      {unknownSub, "downcomer"},
-  };
-  for (const auto& [props, key] : cases) {
-    try {
-      make("spoutDowncomer", props);
-      ADD_FAILURE() << "no InputError for " << key;
-    } catch (const InputError& e) {
-      const std::string msg = e.what();
-      const std::string prefix = std::string("couplingProperties/spoutDowncomerProps: key '") + key + "'";
-      EXPECT_EQ(msg.rfind(prefix, 0), 0u) << msg;
-      EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
+TEST(SpoutDowncomer, BadParametersNameTheKey)
+{
+    Parameters missingWidth("couplingProperties/spoutDowncomerProps");
+    missingWidth.set("region", "geometry").set("fountainBase", "0.912");
+    Parameters zeroWidth = geometryProps();
+    zeroWidth.set("spoutHalfWidth", "0");
+    Parameters missingBase("couplingProperties/spoutDowncomerProps");
+    missingBase.set("region", "geometry").set("spoutHalfWidth", "0.0275");
+    Parameters nonsense = voidageProps();
+    nonsense.set("region", "nonsense");
+    Parameters noRegion("couplingProperties/spoutDowncomerProps");
+    Parameters nested = voidageProps();
+    nested.set("spout", "spoutDowncomer");
+    Parameters unknownSub = voidageProps();
+    unknownSub.set("downcomer", "Whitaker");
+    const std::pair<Parameters, const char*> cases[] = {
+        {missingWidth, "spoutHalfWidth"},
+        {zeroWidth, "spoutHalfWidth"},
+        {missingBase, "fountainBase"},
+        {nonsense, "region"},
+        {noRegion, "region"},
+        {voidageProps("1.5"), "spoutVoidage"},
+        {voidageProps("0"), "spoutVoidage"},
+        {nested, "spout"},
+        {unknownSub, "downcomer"},
+    };
+    for (const auto& [props, key] : cases)
+    {
+        try
+        {
+            make("spoutDowncomer", props);
+            ADD_FAILURE() << "no InputError for " << key;
+        }
+        catch (const InputError& e)
+        {
+            const std::string msg = e.what();
+            const std::string prefix =
+                std::string("couplingProperties/spoutDowncomerProps: key '") + key + "'";
+            EXPECT_EQ(msg.rfind(prefix, 0), 0u) << msg;
+            EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
+        }
     }
-  }
 }

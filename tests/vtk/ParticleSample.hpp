@@ -26,8 +26,14 @@ inline Particle particle(std::size_t i)
     return p;
 }
 
-inline Vec3 fluidForce(std::size_t i) { return {1e-4 * std::sin(0.5 * i), -2e-5, 3e-4 * std::cos(0.5 * i)}; }
-inline double temperature(std::size_t i) { return 293.15 + 60.0 * i / count; }
+inline Vec3 fluidForce(std::size_t i)
+{
+    return {1e-4 * std::sin(0.5 * i), -2e-5, 3e-4 * std::cos(0.5 * i)};
+}
+inline double temperature(std::size_t i)
+{
+    return 293.15 + 60.0 * i / count;
+}
 
 std::vector<Particle> particles();
 std::vector<std::pair<std::string, std::vector<Vec3>>> vectors();

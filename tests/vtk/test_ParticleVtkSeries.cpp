@@ -77,7 +77,7 @@ TEST_F(ParticleVtkSeriesTest, geometryIsExactInDouble)
     auto poly = read("particles_0.5.vtp");
     ASSERT_EQ(poly->GetNumberOfPoints(), vtkIdType(sample::count));
     EXPECT_EQ(poly->GetPoints()->GetDataType(), VTK_DOUBLE);
-    EXPECT_EQ(poly->GetNumberOfVerts(), vtkIdType(sample::count));   // ParaView draws them
+    EXPECT_EQ(poly->GetNumberOfVerts(), vtkIdType(sample::count)); // ParaView draws them
 
     vtkDataArray* id = pointArray(poly, "id");
     vtkDataArray* radius = pointArray(poly, "radius");

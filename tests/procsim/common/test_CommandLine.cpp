@@ -75,9 +75,10 @@ std::string errorOf(std::vector<std::string> words)
 TEST(CommandLine, ReadsOptionsInputAndDefaults)
 {
     Simulate s;
-    ASSERT_TRUE(s.parse({"plant.yaml", "--batch", "3", "--t=-5.5", "--sweep", "I=1", "--sweep", "V=2", "-q"}));
+    ASSERT_TRUE(
+        s.parse({"plant.yaml", "--batch", "3", "--t=-5.5", "--sweep", "I=1", "--sweep", "V=2", "-q"}));
     EXPECT_EQ(s.plant, "plant.yaml");
-    EXPECT_EQ(s.out, ".");   // not given: the default stays
+    EXPECT_EQ(s.out, "."); // not given: the default stays
     EXPECT_EQ(s.batch.value_or("none"), "3");
     EXPECT_EQ(s.t.value_or(0), -5.5);
     EXPECT_FALSE(s.years.has_value());
@@ -109,7 +110,8 @@ TEST(CommandLine, HelpAnywhereIsPrintedAndEndsTheCommand)
 
 TEST(CommandLine, OptionGivenTwiceIsRefused)
 {
-    EXPECT_EQ(errorOf({"p.yaml", "--batch", "1", "--batch", "2"}), "dryer simulate: option --batch given twice");
+    EXPECT_EQ(errorOf({"p.yaml", "--batch", "1", "--batch", "2"}),
+              "dryer simulate: option --batch given twice");
     EXPECT_EQ(errorOf({"p.yaml", "-o", "a", "--out", "b"}), "dryer simulate: option --out given twice");
     EXPECT_EQ(errorOf({"p.yaml", "--out", "a", "-o", "b"}), "dryer simulate: option -o given twice");
     EXPECT_EQ(errorOf({"p.yaml", "-q", "--quiet"}), "dryer simulate: option --quiet given twice");
@@ -125,7 +127,8 @@ TEST(CommandLine, UnknownOptionIsNamedWithWhereToLook)
 
 TEST(CommandLine, InputFileMissingOrTwice)
 {
-    EXPECT_EQ(errorOf({"--batch", "1"}), "dryer simulate: expected one plant file (see procsim dryer simulate --help)");
+    EXPECT_EQ(errorOf({"--batch", "1"}),
+              "dryer simulate: expected one plant file (see procsim dryer simulate --help)");
     EXPECT_EQ(errorOf({"a.yaml", "b.yaml"}), "dryer simulate: more than one plant file given ('b.yaml')");
 }
 
@@ -137,7 +140,8 @@ TEST(CommandLine, OptionWithoutValue)
 TEST(CommandLine, NumbersFollowTheInputRules)
 {
     for (const std::string bad : {"inf", "nan", "1e400", "12.5abc", "abc", ""})
-        EXPECT_EQ(errorOf({"p.yaml", "--t", bad}), "dryer simulate: option --t expected a finite number, got '" + bad + "'");
+        EXPECT_EQ(errorOf({"p.yaml", "--t", bad}),
+                  "dryer simulate: option --t expected a finite number, got '" + bad + "'");
     EXPECT_EQ(errorOf({"p.yaml", "--years", "0"}),
               "dryer simulate: option --years expected an integer from 1 to 100000, got '0'");
     EXPECT_EQ(errorOf({"p.yaml", "--years", "2.5"}),

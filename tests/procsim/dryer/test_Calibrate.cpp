@@ -58,8 +58,7 @@ Plant syntheticPlant()
         b->measuredTime = r.dryingTime;
         b->measuredElectricity = r.electricityJ;
     }
-    p.fit = {{"rate_constant_per_h", 0.02, 2.0},
-             {"venting.old.vent_short_circuit_fraction", 0.0, 0.95}};
+    p.fit = {{"rate_constant_per_h", 0.02, 2.0}, {"venting.old.vent_short_circuit_fraction", 0.0, 0.95}};
     p.calibrateOn = {"a", "cold"};
     p.predict = {"b"};
     p.predictVenting = "modified";

@@ -12,7 +12,7 @@ namespace
 // Table 1: eta [%] and E [kJ/kg water] as published.
 const double kEta[] = {41.92, 40.46, 43.56, 50.79, 54.08};
 const double kE[] = {5971.93, 6177.29, 5684.75, 4981.04, 4667.60};
-}
+} // namespace
 
 // E is an independent check on batches 1-3 only: their water is the published
 // rate x drying time, so E = Q / (rate t) reproduces the paper's E as far as
@@ -28,8 +28,8 @@ TEST(Metrics, Table1SpecificEnergyOfTheOldDryerWithinTheRoundingOfItsInputs)
         const BatchRecord& b = f.batches[i];
         const BatchMetrics m = computeMetrics(b, f.latentHeat);
         ASSERT_EQ(m.waterFrom, "rate x time") << "batch " << i + 1;
-        const double tol = 0.005 / (*b.rateKgPerS * 3600) + 30 / b.timeS + 0.5 * 3.6e6 / b.electricityJ
-                           + 0.005 / kE[i];
+        const double tol =
+            0.005 / (*b.rateKgPerS * 3600) + 30 / b.timeS + 0.5 * 3.6e6 / b.electricityJ + 0.005 / kE[i];
         EXPECT_NEAR(m.specificEnergy / 1e3 / kE[i], 1.0, tol) << "batch " << i + 1;
     }
 }
@@ -100,7 +100,7 @@ TEST(Metrics, DefinitionsByHand)
     b.x2 = 0.1;
     b.timeS = 10 * 3600;
     b.electricityJ = 1000 * 3.6e6;
-    b.dryMassKg = 1000;   // 400 kg water
+    b.dryMassKg = 1000; // 400 kg water
     b.hotAirC = 70;
     b.ambientC = 30;
     LatentHeatConvention lh;

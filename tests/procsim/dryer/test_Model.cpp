@@ -20,7 +20,7 @@ DryerCase batchCase(const std::string& id)
     const Plant p = readPlant(DRYER_CASES "/plant.yaml");
     return p.caseFor(p.batch(id));
 }
-}
+} // namespace
 
 // The model's own invariants (its accumulated counters): product + air
 // holdup + vented - admitted water is constant, and so is the enthalpy sum.
@@ -54,7 +54,7 @@ struct Streams
 Streams streamsAt(const DryerCase& c, const TimePoint& p)
 {
     const double G = c.circulation, gv = c.ventedFraction * G, s = c.ventShortCircuit;
-    const double gt = G - s * gv;   // dry air over the trays
+    const double gt = G - s * gv; // dry air over the trays
     const double wAmb = psy::humidityRatioFromRH(c.ambientC, c.ambientRH, c.pressure);
     const double hAmb = psy::enthalpy(c.ambientC, wAmb);
     const double hReturn = psy::enthalpy(p.tReturn, p.wReturn);
@@ -120,12 +120,14 @@ SeriesBalance balanceFromSeries(const DryerCase& c, const BatchResult& r)
 
     const double h0 = c.dryMass * (c.cpDry + a.xAvg * psy::kCpWater) * a.tProductMean;
     const double dProduct = finalProductEnthalpy(c, r) - h0;
-    const double dAir = c.airHoldup * (psy::enthalpy(b.tReturn, b.wReturn) - psy::enthalpy(a.tReturn, a.wReturn));
+    const double dAir =
+        c.airHoldup * (psy::enthalpy(b.tReturn, b.wReturn) - psy::enthalpy(a.tReturn, a.wReturn));
     const double vent = integrate(S, [&](const TimePoint& p) { return streamsAt(c, p).ventEnthalpy; });
     const double wall = integrate(S, [&](const TimePoint& p) { return streamsAt(c, p).wallLoss; });
     B.electricityJ = b.electricityJ;
     B.energy = b.electricityJ - (dProduct + dAir + vent + wall);
-    B.electricity = integrate(S, [&](const TimePoint& p) { return streamsAt(c, p).electricity; }) - b.electricityJ;
+    B.electricity =
+        integrate(S, [&](const TimePoint& p) { return streamsAt(c, p).electricity; }) - b.electricityJ;
     return B;
 }
 
@@ -150,17 +152,19 @@ TEST(Model, BalancesCloseFromTheWrittenSeries)
             c.outputInterval = dt;
             const BatchResult r = simulate(c);
             ASSERT_TRUE(r.reachedTarget) << id;
-            for (const auto& p : r.series) ASSERT_LT(p.rhReturn, 1.0) << id << ": condensate not in the balance";
+            for (const auto& p : r.series)
+                ASSERT_LT(p.rhReturn, 1.0) << id << ": condensate not in the balance";
             at.push_back(balanceFromSeries(c, r));
         }
         const SeriesBalance &coarse = at[0], &fine = at[1];
         const double water = c.dryMass * (c.x0 - c.xTarget), energy = fine.electricityJ;
         auto exact = [](double r2h, double rh) { return (4 * rh - r2h) / 3; };
-        std::printf("batch %s, residuals at 18.75 s [extrapolated]: water %.1e [%.1e], evaporation %.1e [%.1e]"
-                    " of the water evaporated; energy %.1e [%.1e], electricity %.1e of the electricity\n",
-                    id, fine.water / water, exact(coarse.water, fine.water) / water, fine.evaporation / water,
-                    exact(coarse.evaporation, fine.evaporation) / water, fine.energy / energy,
-                    exact(coarse.energy, fine.energy) / energy, fine.electricity / energy);
+        std::printf(
+            "batch %s, residuals at 18.75 s [extrapolated]: water %.1e [%.1e], evaporation %.1e [%.1e]"
+            " of the water evaporated; energy %.1e [%.1e], electricity %.1e of the electricity\n",
+            id, fine.water / water, exact(coarse.water, fine.water) / water, fine.evaporation / water,
+            exact(coarse.evaporation, fine.evaporation) / water, fine.energy / energy,
+            exact(coarse.energy, fine.energy) / energy, fine.electricity / energy);
         EXPECT_LT(std::fabs(fine.water), 2e-5 * water) << id;
         EXPECT_LT(std::fabs(fine.evaporation), 2e-5 * water) << id;
         EXPECT_LT(std::fabs(fine.energy), 2e-5 * energy) << id;

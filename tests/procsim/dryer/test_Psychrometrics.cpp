@@ -12,12 +12,12 @@ namespace psy = procsim::dryer::psy;
 // Table 3 / IAPWS steam tables [Pa].
 TEST(Psychrometrics, SaturationPressureOverWaterMatchesSteamTables)
 {
-    const struct { double t, p, tol; } ref[] = {
-        {0.01, 611.66, 2e-3},   {20, 2339.2, 1e-3},   {40, 7384.9, 1e-3},
-        {60, 19946.0, 1e-3},    {80, 47416.0, 1e-3},  {100, 101418.0, 1e-3},
-        {150, 476160.0, 2e-3},  {200, 1554900.0, 3e-3}};
-    for (const auto& r : ref)
-        EXPECT_NEAR(psy::saturationPressure(r.t) / r.p, 1.0, r.tol) << "t = " << r.t;
+    const struct
+    {
+        double t, p, tol;
+    } ref[] = {{0.01, 611.66, 2e-3}, {20, 2339.2, 1e-3},    {40, 7384.9, 1e-3},    {60, 19946.0, 1e-3},
+               {80, 47416.0, 1e-3},  {100, 101418.0, 1e-3}, {150, 476160.0, 2e-3}, {200, 1554900.0, 3e-3}};
+    for (const auto& r : ref) EXPECT_NEAR(psy::saturationPressure(r.t) / r.p, 1.0, r.tol) << "t = " << r.t;
 }
 
 // Over ice: ASHRAE Fundamentals ch. 1 Table 3 [Pa].

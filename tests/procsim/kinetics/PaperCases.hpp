@@ -23,7 +23,10 @@ inline Results runShipped(const std::string& file, const Overrides& o = {})
 }
 
 // 30 mg/L phenol, 30 ppm acetaldehyde, 0.3 mA (the paper's base condition)
-inline Results base(const Overrides& o = {}) { return runShipped("base_0.3mA_30mgL_30ppm.yaml", o); }
+inline Results base(const Overrides& o = {})
+{
+    return runShipped("base_0.3mA_30mgL_30ppm.yaml", o);
+}
 
 inline double peak(const Results& r, const std::string& q)
 {

@@ -10,7 +10,8 @@ namespace kt
 
 inline std::string scratchDir()
 {
-    const auto d = std::filesystem::temp_directory_path() / ("procsim_kinetics_test_" + std::to_string(::getpid()));
+    const auto d =
+        std::filesystem::temp_directory_path() / ("procsim_kinetics_test_" + std::to_string(::getpid()));
     std::filesystem::create_directories(d);
     return d.string();
 }
@@ -22,6 +23,9 @@ inline std::string writeFile(const std::string& name, const std::string& text)
     return path;
 }
 
-inline std::string casesDir() { return KINETICS_CASES_DIR; }
+inline std::string casesDir()
+{
+    return KINETICS_CASES_DIR;
+}
 
 } // namespace kt

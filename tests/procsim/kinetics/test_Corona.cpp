@@ -20,7 +20,7 @@ TEST(KineticsCorona, MeanEOverNIsTheAreaAverageOfEq1)
     double integral = 0;
     for (int i = 0; i < m; ++i)
     {
-        const double x = r0 + (i + 0.5) * (r - r0) / m;   // midpoint rule
+        const double x = r0 + (i + 0.5) * (r - r0) / m; // midpoint rule
         integral += 2 * M_PI * x * field(v, x, r, r0) / n * (r - r0) / m;
     }
     const double mean = integral / (M_PI * (r * r - r0 * r0));
@@ -32,7 +32,8 @@ TEST(KineticsCorona, PaperVoltagesGiveItsTrends)
     // toluene paper: 0.5 mA needs 14.8, 15.3, 17.0 kV (wires 0.3, 0.5, 0.9 mm, 37 mm anode) at room
     // temperature and 4.1, 5.9, 6.4 kV at 400 C; <E/N> is higher for a thicker cathode and falls
     // with temperature.
-    const double d[] = {0.3e-3, 0.5e-3, 0.9e-3}, vRoom[] = {14.8e3, 15.3e3, 17.0e3}, vHot[] = {4.1e3, 5.9e3, 6.4e3};
+    const double d[] = {0.3e-3, 0.5e-3, 0.9e-3}, vRoom[] = {14.8e3, 15.3e3, 17.0e3},
+                 vHot[] = {4.1e3, 5.9e3, 6.4e3};
     const double nRoom = numberDensity(101325.0, 298.15), nHot = numberDensity(101325.0, 673.15);
     double prev = 0;
     for (int i = 0; i < 3; ++i)

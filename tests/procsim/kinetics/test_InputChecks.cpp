@@ -32,8 +32,9 @@ TEST(InputChecks, NumbersAreFiniteAndFillTheWholeText)
 {
     EXPECT_EQ(parseFinite("12.5"), 12.5);
     EXPECT_EQ(parseFinite(" -3e2 "), -300.0);
-    EXPECT_EQ(parseFinite("1e-400"), 0.0);   // underflow is a number
-    for (const char* bad : {"12.5abc", "", " ", "inf", "-inf", ".inf", "nan", ".nan", "NaN", "1e400", "abc", "1,5"})
+    EXPECT_EQ(parseFinite("1e-400"), 0.0); // underflow is a number
+    for (const char* bad :
+         {"12.5abc", "", " ", "inf", "-inf", ".inf", "nan", ".nan", "NaN", "1e400", "abc", "1,5"})
         EXPECT_FALSE(parseFinite(bad)) << bad;
     EXPECT_EQ(parseInteger("42", 1, 100), 42L);
     for (const char* bad : {"0", "101", "4.0", "4x", "99999999999999999999999", ""})
@@ -42,7 +43,8 @@ TEST(InputChecks, NumbersAreFiniteAndFillTheWholeText)
 
 TEST(InputChecks, YamlNumbersGoThroughTheCheckedReader)
 {
-    const std::string f = kt::writeFile("checks.yaml", "a: .inf\nb: 1e308\nc: 3abc\nd: 5\nlist: [1, .nan]\nn: 2147483648\n");
+    const std::string f =
+        kt::writeFile("checks.yaml", "a: .inf\nb: 1e308\nc: 3abc\nd: 5\nlist: [1, .nan]\nn: 2147483648\n");
     const YamlInput in = YamlInput::load(f);
     EXPECT_THROW(in.number("a"), InputError);
     EXPECT_EQ(in.number("b"), 1e308);
@@ -50,7 +52,7 @@ TEST(InputChecks, YamlNumbersGoThroughTheCheckedReader)
     EXPECT_THROW(in.number("c"), InputError);
     EXPECT_EQ(in.within("d", 0, 10), 5.0);
     EXPECT_THROW(in.numbers("list"), InputError);
-    EXPECT_THROW(in.integer("n"), InputError);   // beyond int
+    EXPECT_THROW(in.integer("n"), InputError); // beyond int
     try
     {
         in.number("a", "h");
@@ -89,30 +91,32 @@ TEST(InputChecks, StepCountsAreCountedInDoubleAndCapped)
     }
     catch (const InputError& e)
     {
-        EXPECT_EQ(std::string(e.what()),
-                  "case.yaml: key 'time.dt_s': an hour needs about 3.6e+10 steps (limit 10000000); use a larger dt_s");
+        EXPECT_EQ(
+            std::string(e.what()),
+            "case.yaml: key 'time.dt_s': an hour needs about 3.6e+10 steps (limit 10000000); use a larger dt_s");
     }
 }
 
 TEST(InputChecks, NamesThatBecomeFileNames)
 {
     EXPECT_NO_THROW(checkFileNamePart("R1_north-2", "w"));
-    for (const char* bad : {"", ".", "..", "a/b", "a\\b", "a\nb"}) EXPECT_THROW(checkFileNamePart(bad, "w"), InputError) << bad;
+    for (const char* bad : {"", ".", "..", "a/b", "a\\b", "a\nb"})
+        EXPECT_THROW(checkFileNamePart(bad, "w"), InputError) << bad;
     EXPECT_THROW(rejectDuplicates(std::vector<std::string>{"a", "b", "a"}, "w", "name"), InputError);
 }
 
 TEST(InputChecks, OutputsOfAFailedBatchLeaveTheEarlierFiles)
 {
     const std::string path = kt::scratchDir() + "/staged.csv";
-    writeTextFile(path, "earlier\n");   // no batch: in place at once
+    writeTextFile(path, "earlier\n"); // no batch: in place at once
     EXPECT_EQ(contents(path), "earlier\n");
     {
         OutputBatch batch;
         CsvWriter w(path, {"x"});
         w.row(std::vector<double>{1});
         w.close();
-        EXPECT_EQ(contents(path), "earlier\n");   // staged, not yet in place
-    }                                              // no commit: the run failed
+        EXPECT_EQ(contents(path), "earlier\n"); // staged, not yet in place
+    }                                           // no commit: the run failed
     EXPECT_EQ(contents(path), "earlier\n");
     EXPECT_FALSE(std::filesystem::exists(path + ".tmp"));
     {

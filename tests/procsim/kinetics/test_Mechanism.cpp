@@ -12,7 +12,10 @@ using namespace procsim::kinetics;
 namespace
 {
 
-Mechanism paper() { return Mechanism::load(kt::casesDir() + "/phenol_acetaldehyde_mechanism.yaml"); }
+Mechanism paper()
+{
+    return Mechanism::load(kt::casesDir() + "/phenol_acetaldehyde_mechanism.yaml");
+}
 
 std::string errorOf(const std::string& yaml)
 {
@@ -58,7 +61,7 @@ TEST(KineticsMechanism, BalancesMatchTable2)
     Eigen::MatrixXd a;
     Eigen::VectorXd b;
     model.linearForm(a, b);
-    const double oh = 8.77e-10 * 0.3 / 17.007 / 1000.0;   // mol/L (paper Fig 3, mg/L -> mol/L)
+    const double oh = 8.77e-10 * 0.3 / 17.007 / 1000.0; // mol/L (paper Fig 3, mg/L -> mol/L)
     EXPECT_NEAR(c.radicalConcentration(), oh, 1e-12 * oh);
     auto s = [&](const std::string& n) {
         for (std::size_t i = 0; i < model.size(); ++i)
@@ -66,8 +69,8 @@ TEST(KineticsMechanism, BalancesMatchTable2)
         ADD_FAILURE() << n;
         return Eigen::Index(0);
     };
-    const double k1 = 5e9, k2 = 4e9, k3 = 5e9, k4 = 8e9, k5 = 7e9, k6 = 6.5e9, k7 = 1e9, k8 = 1e9, k9 = 1.1e10,
-                 k10 = 1e11, k11 = 1e10, k12 = 1e10;
+    const double k1 = 5e9, k2 = 4e9, k3 = 5e9, k4 = 8e9, k5 = 7e9, k6 = 6.5e9, k7 = 1e9, k8 = 1e9,
+                 k9 = 1.1e10, k10 = 1e11, k11 = 1e10, k12 = 1e10;
     const double tol = 1e-12;
     auto near = [&](double x, double y) { EXPECT_NEAR(x, y, tol * std::max(1.0, std::fabs(y))); };
     // d[AD]/dt = q_g C_in / W - (k1 + k2)[AD][OH]
@@ -101,23 +104,29 @@ TEST(KineticsMechanism, BalancesMatchTable2)
     for (const char* r : {"AD", "UP_C1", "AA", "PH", "CC", "HQ", "RC", "UP_C6"})
         for (const char* col : {"AD", "UP_C1", "AA", "PH", "CC", "HQ", "RC", "UP_C6"})
             nonzero += a(s(r), s(col)) != 0.0;
-    EXPECT_EQ(nonzero, 18);   // 1+2+3+1+2+2+2+5 terms of Table 2
+    EXPECT_EQ(nonzero, 18); // 1+2+3+1+2+2+2+5 terms of Table 2
 }
 
 TEST(KineticsMechanism, ErrorsAreOneLineAndNameTheProblem)
 {
-    const std::string unknown = errorOf(std::string(okSpecies) + "reactions:\n  - {id: r, equation: \"A + X -> B\", k: 1, units: L/mol/s}\n");
+    const std::string unknown = errorOf(
+        std::string(okSpecies) + "reactions:\n  - {id: r, equation: \"A + X -> B\", k: 1, units: L/mol/s}\n");
     EXPECT_NE(unknown.find("unknown species 'X'"), std::string::npos) << unknown;
-    const std::string negative = errorOf(std::string(okSpecies) + "reactions:\n  - {id: r, equation: \"A -> B\", k: -1, units: 1/s}\n");
+    const std::string negative = errorOf(
+        std::string(okSpecies) + "reactions:\n  - {id: r, equation: \"A -> B\", k: -1, units: 1/s}\n");
     EXPECT_NE(negative.find("reactions[0].k"), std::string::npos) << negative;
     EXPECT_NE(negative.find(">= 0"), std::string::npos) << negative;
-    const std::string units = errorOf(std::string(okSpecies) + "reactions:\n  - {id: r, equation: \"A -> B\", k: 1, units: L/mol/s}\n");
+    const std::string units = errorOf(
+        std::string(okSpecies) + "reactions:\n  - {id: r, equation: \"A -> B\", k: 1, units: L/mol/s}\n");
     EXPECT_NE(units.find("'1/s' for a reaction of order 1"), std::string::npos) << units;
-    const std::string missing = errorOf(std::string(okSpecies) + "reactions:\n  - {id: r, equation: \"A -> B\", units: 1/s}\n");
+    const std::string missing =
+        errorOf(std::string(okSpecies) + "reactions:\n  - {id: r, equation: \"A -> B\", units: 1/s}\n");
     EXPECT_NE(missing.find("'reactions[0].k' is missing"), std::string::npos) << missing;
-    const std::string carbon = errorOf(std::string(okSpecies) + "reactions:\n  - {id: r, equation: \"A -> 2 B\", k: 1, units: 1/s}\n");
+    const std::string carbon = errorOf(
+        std::string(okSpecies) + "reactions:\n  - {id: r, equation: \"A -> 2 B\", k: 1, units: 1/s}\n");
     EXPECT_NE(carbon.find("does not conserve carbon"), std::string::npos) << carbon;
-    for (const auto& e : {unknown, negative, units, missing, carbon}) EXPECT_EQ(e.find('\n'), std::string::npos) << e;
+    for (const auto& e : {unknown, negative, units, missing, carbon})
+        EXPECT_EQ(e.find('\n'), std::string::npos) << e;
 }
 
 TEST(KineticsCase, OverridesAndErrors)

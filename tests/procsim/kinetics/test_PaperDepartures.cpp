@@ -27,16 +27,16 @@ namespace
 {
 
 // documented: the model's value in the README's table of departures
-void expectPaper(const char* name, const char* statement, double model, double lo, double hi, const char* unit,
-                 double documented)
+void expectPaper(const char* name, const char* statement, double model, double lo, double hi,
+                 const char* unit, double documented)
 {
     std::ostringstream m;
-    m << std::setprecision(3) << "DEPARTURE " << name << ": " << statement << ": paper " << lo << " to " << hi << unit
-      << ", model " << model << unit;
+    m << std::setprecision(3) << "DEPARTURE " << name << ": " << statement << ": paper " << lo << " to " << hi
+      << unit << ", model " << model << unit;
     EXPECT_TRUE(model >= lo && model <= hi) << m.str();
     std::ostringstream d;
-    d << std::setprecision(3) << "DRIFT " << name << ": the model gives " << model << unit << ", the README documents "
-      << documented << unit;
+    d << std::setprecision(3) << "DRIFT " << name << ": the model gives " << model << unit
+      << ", the README documents " << documented << unit;
     EXPECT_NEAR(model, documented, 0.01 * std::fabs(documented)) << d.str();
 }
 
@@ -93,8 +93,8 @@ TEST(KineticsDeparture, TocAt8hFor50mgLPhenol)
 // Fig 6: after 8 h TOC "remained essentially constant" at 4-5 mg/L: read as still 4-5 at 10 h.
 TEST(KineticsDeparture, TocPlateauAfter8h)
 {
-    expectPaper("toc_plateau", "TOC at 10 h, 30 mg/L phenol (Fig 6)", base().value("TOC", 10 * hour), 4.0, 5.0,
-                " mg C/L", 2.95);
+    expectPaper("toc_plateau", "TOC at 10 h, 30 mg/L phenol (Fig 6)", base().value("TOC", 10 * hour), 4.0,
+                5.0, " mg C/L", 2.95);
 }
 
 // Fig 5b: aqueous acetaldehyde "initially increased in the early stage for all runs.
@@ -108,8 +108,9 @@ TEST(KineticsDeparture, AqueousAcetaldehydeRisesThenFalls)
         const Results r = base({{"gas.inlet_ppm.AD", ppm}});
         worst = std::max(worst, r.value("AD", 10 * hour) / peak(r, "AD"));
     }
-    expectPaper("acetaldehyde_falls", "aqueous acetaldehyde at 10 h, fraction of its maximum, 30-200 ppm (Fig 5b)",
-                worst, 0.0, 0.95, "", 1.0);
+    expectPaper("acetaldehyde_falls",
+                "aqueous acetaldehyde at 10 h, fraction of its maximum, 30-200 ppm (Fig 5b)", worst, 0.0,
+                0.95, "", 1.0);
 }
 
 // Fig 8, 30/30: acetic acid at 10 h "ca. 7" mg/L at 0.1 mA (read as 6.5-7.5).
@@ -132,8 +133,8 @@ TEST(KineticsDeparture, SensitivityOfAceticAcidToK12)
 {
     const double worst = std::max(std::fabs(sensitivityAt10h("k12", "AA", 0.1)),
                                   std::fabs(sensitivityAt10h("k12", "AA", -0.1)));
-    expectPaper("sensitivity_aa_k12", "largest acetic acid deviation at 10 h for k12 +-10 % (Table S1)", worst, 0.0,
-                0.02, "", 0.0300);
+    expectPaper("sensitivity_aa_k12", "largest acetic acid deviation at 10 h for k12 +-10 % (Table S1)",
+                worst, 0.0, 0.02, "", 0.0300);
 }
 
 // Table S1: "k4 was found to be sensitive to TOC at maximum at ca. -5 %".

@@ -39,7 +39,7 @@ TEST(KineticsPaper, AceticAcidAt10hAbout1mgLAt05mA)
     // same reading as for the 7, which the model misses: kinetics.departure.acetic_acid_0_1mA).
     const double aa = base({{"I", 0.5}}).value("AA", 10 * hour);
     EXPECT_NEAR(aa, 1.0, halfUnit);
-    EXPECT_GT(base({{"I", 0.1}}).value("AA", 10 * hour), 5 * aa);   // "obviously decrease"
+    EXPECT_GT(base({{"I", 0.1}}).value("AA", 10 * hour), 5 * aa); // "obviously decrease"
 }
 
 TEST(KineticsPaper, MorePhenolLeavesMoreAceticAcid)
@@ -63,7 +63,8 @@ TEST(KineticsPaper, AcetaldehydeFeedDoesNotSlowPhenolButRaisesResidualAcetaldehy
     EXPECT_GT(r200.value("AD", 10 * hour), base().value("AD", 10 * hour));
     // "Influent concentrations of 100 ppm or higher obviously inhibited the TOC degradation"
     for (double ppm : {100.0, 200.0})
-        EXPECT_GT(base({{"gas.inlet_ppm.AD", ppm}}).value("TOC", 8 * hour), base().value("TOC", 8 * hour)) << ppm;
+        EXPECT_GT(base({{"gas.inlet_ppm.AD", ppm}}).value("TOC", 8 * hour), base().value("TOC", 8 * hour))
+            << ppm;
 }
 
 TEST(KineticsPaper, HigherCurrentFasterPhenolAndTocRemovalTocSlowerThanPhenol)
@@ -97,7 +98,9 @@ TEST(KineticsPaper, Fig7CatecholMajorHydroquinoneGoneBy300MinAceticAcidTheMajorS
     // "acetic acid was considered as the major stable intermediate": the largest single share of
     // TOC at 7 h (the 75 % the text gives is a departure)
     const double t = 7 * hour;
-    auto carbon = [&](const char* s, double mw, double nc) { return r.value(s, t) / mw * nc * carbonMolarMass; };
+    auto carbon = [&](const char* s, double mw, double nc) {
+        return r.value(s, t) / mw * nc * carbonMolarMass;
+    };
     const double aa = carbon("AA", 60.052, 2);
     for (const double other : {carbon("UP_C6", 108.096, 6), carbon("CC", 110.112, 6), carbon("PH", 94.113, 6),
                                carbon("AD", 44.053, 2), carbon("UP_C1", 46.025, 1)})
@@ -113,7 +116,8 @@ TEST(KineticsPaper, SensitivityTableS1)
     // kinetics.departure.sensitivity_aa_k12).  The paper does not say at which time; evaluated
     // at the end of the 10 h runs, hence a point either side.
     const CaseSource src = CaseSource::load(casesDir() + "/base_0.3mA_30mgL_30ppm.yaml");
-    const auto rows = sensitivity(src, {}, {"k1", "k2", "k3", "k4", "k8", "k12"}, {"PH", "AD", "AA"}, 10 * hour, 0.1);
+    const auto rows =
+        sensitivity(src, {}, {"k1", "k2", "k3", "k4", "k8", "k12"}, {"PH", "AD", "AA"}, 10 * hour, 0.1);
     auto dev = [&](const std::string& k, const std::string& out, double change) {
         for (const auto& r : rows)
             if (r.parameter == k && r.output == out && r.change == change) return r.deviation;
@@ -125,7 +129,7 @@ TEST(KineticsPaper, SensitivityTableS1)
         EXPECT_NEAR(std::fabs(dev("k8", "PH", c)), 0.06, 0.01);
         EXPECT_NEAR(std::fabs(dev("k1", "AD", c)), 0.055, 0.01);
         EXPECT_NEAR(std::fabs(dev("k2", "AD", c)), 0.0425, 0.01);
-        EXPECT_LT(dev("k3", "AA", c) * c, 0.0);   // faster acetic acid oxidation, less acetic acid
+        EXPECT_LT(dev("k3", "AA", c) * c, 0.0); // faster acetic acid oxidation, less acetic acid
         for (const char* k : {"k1", "k2", "k4", "k8", "k12"})
             EXPECT_GT(std::fabs(dev("k3", "AA", c)), std::fabs(dev(k, "AA", c))) << k;
         for (const char* k : {"k1", "k2", "k4", "k8"}) EXPECT_LT(std::fabs(dev(k, "AA", c)), 0.02) << k;
@@ -141,16 +145,16 @@ TEST(KineticsPaper, EnergeticEfficienciesFollowEqs18to20)
     ASSERT_TRUE(e.halfReached);
     // definition of t_1/2: TOC with discharge = half of TOC without discharge
     const double t = e.tHalf;
-    const double w = 1.0, cp = 30.0, cin = 30.0, i = 0.3, v = 10.0;   // L, mg/L, ppm, mA, kV
-    const double qg = 101.3e3 * 100e-6 / 60.0 / (gasConstant * 298.15);   // mol/s
+    const double w = 1.0, cp = 30.0, cin = 30.0, i = 0.3, v = 10.0;     // L, mg/L, ppm, mA, kV
+    const double qg = 101.3e3 * 100e-6 / 60.0 / (gasConstant * 298.15); // mol/s
     const double mc = carbonMolarMass, ma = 44.053, mp = 94.113;
     const double rcp = 6 * mc / mp, rca = 2 * mc / ma;
-    const double tocNoDischarge = cp * rcp + qg * cin * 1e-6 * ma * rca * t * 1000.0 / w;   // mg C/L
+    const double tocNoDischarge = cp * rcp + qg * cin * 1e-6 * ma * rca * t * 1000.0 / w; // mg C/L
     EXPECT_NEAR(r.value("TOC", t), 0.5 * tocNoDischarge, 0.02);
     // eq 18 as printed, with I V in W (mA x kV)
     const double jToc = (w * (cp / 1000) * rcp + qg * cin * 1e-6 * ma * rca * t) / (2 * mc) / (i * v * t);
-    const double jP = w * (cp / 1000) / (2 * mp) / (i * v * t);   // eq 19
-    const double jA = qg * cin * 1e-6 / (i * v);                   // eq 20
+    const double jP = w * (cp / 1000) / (2 * mp) / (i * v * t); // eq 19
+    const double jA = qg * cin * 1e-6 / (i * v);                // eq 20
     EXPECT_NEAR(e.jToc, jToc, 1e-9 * jToc);
     ASSERT_EQ(e.jLiquid.size(), 1u);
     EXPECT_NEAR(e.jLiquid[0].second, jP, 1e-9 * jP);

@@ -33,8 +33,8 @@ std::string chainCase(const std::string& method, double feedPpm)
     return kt::writeFile("chain_" + method + ".yaml", R"(
 mechanism: chain_mech.yaml
 reactor: {liquid_volume_L: 2.0}
-gas: {flow_mL_per_min: 60, temperature_C: 0, pressure_kPa: 101.325, inlet_ppm: {A: )" +
-                                                          std::to_string(feedPpm) + R"(}}
+gas: {flow_mL_per_min: 60, temperature_C: 0, pressure_kPa: 101.325, inlet_ppm: {A: )"
+                                                          + std::to_string(feedPpm) + R"(}}
 initial_mg_per_L: {A: 44.0}
 oh: {model: constant, concentration_mg_per_L: 1.7e-10}
 time: {duration_h: 5, output_interval_min: 10}
@@ -42,7 +42,10 @@ solver: {method: )" + method + R"(, rk4_step_s: 20, rtol: 1e-10, atol_mol_per_L:
 )");
 }
 
-Results runFile(const std::string& file) { return runCase(CaseSource::load(file).build()); }
+Results runFile(const std::string& file)
+{
+    return runCase(CaseSource::load(file).build());
+}
 
 } // namespace
 
@@ -51,9 +54,9 @@ TEST(KineticsSolvers, FirstOrderDecayIsExponential)
     for (const std::string method : {"expm", "rk4", "cvode"})
     {
         const Results r = runFile(chainCase(method, 0.0));
-        const double oh = 1.7e-10 / 1000.0 / 17.0;   // mol/L
-        const double a = 2e9 * oh, b = 0.5e9 * oh;   // 1/s
-        const double a0 = 1e-3;                     // 44 mg/L of a 44 g/mol species
+        const double oh = 1.7e-10 / 1000.0 / 17.0; // mol/L
+        const double a = 2e9 * oh, b = 0.5e9 * oh; // 1/s
+        const double a0 = 1e-3;                    // 44 mg/L of a 44 g/mol species
         const double tol = method == "cvode" ? 1e-7 : 1e-9;
         for (std::size_t i = 0; i < r.t.size(); ++i)
         {
@@ -71,7 +74,7 @@ TEST(KineticsSolvers, FeedApproachesItsSteadyState)
     const Results r = runFile(chainCase("expm", 100.0));
     const double oh = 1.7e-10 / 1000.0 / 17.0;
     const double a = 2e9 * oh;
-    const double feed = 101325.0 * 60e-6 / 60.0 / (gasConstant * 273.15) * 100e-6 / 2.0;   // mol/(L s)
+    const double feed = 101325.0 * 60e-6 / 60.0 / (gasConstant * 273.15) * 100e-6 / 2.0; // mol/(L s)
     const double a0 = 1e-3;
     for (std::size_t i = 0; i < r.t.size(); ++i)
     {
@@ -181,11 +184,13 @@ TEST(KineticsSolvers, IntegratedOhWithFastScavengingMatchesPseudoSteadyOh)
     // demand (sum k_i c_i <= 15.5e9 * 3.2e-4 = 5e6 1/s), [OH] stays within 0.05 % of P / k_s, so the
     // stiff nonlinear run must reproduce the linear pseudo-steady one to well under 2 %.
     const Results pss = runCase(CaseSource::load(kt::casesDir() + "/base_0.3mA_30mgL_30ppm.yaml").build());
-    const Results dyn = runCase(CaseSource::load(kt::casesDir() + "/dynamic_oh_0.3mA_30mgL_30ppm.yaml").build());
+    const Results dyn =
+        runCase(CaseSource::load(kt::casesDir() + "/dynamic_oh_0.3mA_30mgL_30ppm.yaml").build());
     EXPECT_EQ(dyn.cas.solver.method, "cvode");
     for (double t : {3 * 3600.0, 8 * 3600.0})
         for (const char* q : {"PH", "AA", "CC", "TOC"})
-            EXPECT_NEAR(dyn.value(q, t), pss.value(q, t), 0.02 * pss.value(q, t)) << q << " at " << t / 3600 << " h";
+            EXPECT_NEAR(dyn.value(q, t), pss.value(q, t), 0.02 * pss.value(q, t))
+                << q << " at " << t / 3600 << " h";
     const std::size_t oh = dyn.cas.mech.index("OH", "");
     EXPECT_NEAR(dyn.c.back()[static_cast<Eigen::Index>(oh)], 1.547e-14, 1e-3 * 1.547e-14);
     EXPECT_LT(maxCarbonError(dyn), kCarbonRoundOff);
@@ -198,17 +203,17 @@ TEST(KineticsSolvers, FeedSupportedSteadyStateByHand)
     // F = q_g C_in 10^-6 / W.  Base case: 100 mL/min at 25 C and 101.3 kPa, 30 ppm, 1 L, 0.3 mA.
     // The slowest time scale is 1/(k3 [OH]) = 3.6 h, so after 100 h the run is at the steady
     // state to far better than 1e-6.
-    const double oh = 8.77e-10 * 0.3 / 17.007 / 1000.0;                         // mol/L
-    const double qg = 101.3e3 * 100e-6 / 60.0 / (gasConstant * 298.15);          // mol/s
-    const double feed = qg * 30e-6 / 1.0;                                        // mol/L/s
+    const double oh = 8.77e-10 * 0.3 / 17.007 / 1000.0;                 // mol/L
+    const double qg = 101.3e3 * 100e-6 / 60.0 / (gasConstant * 298.15); // mol/s
+    const double feed = qg * 30e-6 / 1.0;                               // mol/L/s
     const double k1 = 5e9, k2 = 4e9, k3 = 5e9, k4 = 8e9;
     const double ad = feed / ((k1 + k2) * oh), aa = k1 / k3 * ad, up = k2 / k4 * ad;
-    const double toc = (2 * ad + 2 * aa + up) * carbonMolarMass * 1000.0;         // mg C/L
-    const Results r = runCase(CaseSource::load(kt::casesDir() + "/base_0.3mA_30mgL_30ppm.yaml")
-                                  .build({{"time.duration_h", 100}}));
+    const double toc = (2 * ad + 2 * aa + up) * carbonMolarMass * 1000.0; // mg C/L
+    const Results r = runCase(
+        CaseSource::load(kt::casesDir() + "/base_0.3mA_30mgL_30ppm.yaml").build({{"time.duration_h", 100}}));
     const double t = 100 * 3600.0;
     EXPECT_NEAR(r.value("AD", t), ad * 44.053e3, 1e-6 * ad * 44.053e3);
     EXPECT_NEAR(r.value("AA", t), aa * 60.052e3, 1e-6 * aa * 60.052e3);
     EXPECT_NEAR(r.value("TOC", t), toc, 1e-6 * toc);
-    EXPECT_NEAR(toc, 0.79, 0.005);   // the README's figure for the toc_plateau departure
+    EXPECT_NEAR(toc, 0.79, 0.005); // the README's figure for the toc_plateau departure
 }

@@ -24,13 +24,11 @@ double lineSource(double q, double u, double k, double x, double z)
 // The same between a ground at z = 0 and a lid at z = H (both no-flux):
 // images at 2nH +- zs.  The source is a square of side b centred at (xc, zs),
 // integrated with 4x4 Gauss-Legendre points (field points are far from it).
-double channelBoxSource(double q, double u, double k, double xc, double zs, double H, double b,
-                        double x, double z)
+double channelBoxSource(double q, double u, double k, double xc, double zs, double H, double b, double x,
+                        double z)
 {
-    const double gp[4] = {-0.861136311594053, -0.339981043584856, 0.339981043584856,
-                          0.861136311594053};
-    const double gw[4] = {0.347854845137454, 0.652145154862546, 0.652145154862546,
-                          0.347854845137454};
+    const double gp[4] = {-0.861136311594053, -0.339981043584856, 0.339981043584856, 0.861136311594053};
+    const double gw[4] = {0.347854845137454, 0.652145154862546, 0.652145154862546, 0.347854845137454};
     double sum = 0;
     for (int a = 0; a < 4; ++a)
         for (int c = 0; c < 4; ++c)
@@ -49,11 +47,12 @@ double channelBoxSource(double q, double u, double k, double xc, double zs, doub
 
 struct Case2D
 {
-    double u = 1.0, k = 0.1, q = 1.0, zs = 4.1, H = 8.0, b = 0.2, xs = 0.1;   // box [0,0.2]x[4,4.2] is on faces of every grid
+    double u = 1.0, k = 0.1, q = 1.0, zs = 4.1, H = 8.0, b = 0.2,
+           xs = 0.1; // box [0,0.2]x[4,4.2] is on faces of every grid
     double xmin = -2.0, xmax = 12.0;
     Advection scheme = Advection::LimitedQuick;
     bool implicitVertical = false;
-    double tEnd = 20.0;   // steady to well below the discretisation error at x <= 10
+    double tEnd = 20.0; // steady to well below the discretisation error at x <= 10
 };
 
 // Runs the 2D problem (one cell across y) to steady state on cells of size h
@@ -63,10 +62,10 @@ double error2D(const Case2D& cs, double h, double* massBalance = nullptr)
     const int nx = static_cast<int>(std::lround((cs.xmax - cs.xmin) / h));
     const int nz = static_cast<int>(std::lround(cs.H / h));
     TerrainGrid g = TerrainGrid::box(nx, 1, nz, cs.xmin, 0.0, h, 1.0, cs.H);
-    WindModel wind(g, 0.0, 10.0);   // exponent 0: uniform profile
+    WindModel wind(g, 0.0, 10.0); // exponent 0: uniform profile
     Transport t(g, cs.k, cs.k, cs.scheme);
     t.setImplicitVertical(cs.implicitVertical);
-    t.setFlow(wind.flow(cs.u, 270.0));   // from the west: along +x
+    t.setFlow(wind.flow(cs.u, 270.0)); // from the west: along +x
     std::vector<double> src(g.size(), 0.0);
     double total = 0;
     for (int k = 0; k < nz; ++k)
@@ -79,7 +78,7 @@ double error2D(const Case2D& cs, double h, double* massBalance = nullptr)
                 total += 1.0;
             }
         }
-    for (auto& s : src) s *= cs.q / total;   // q per metre of y (dy = 1)
+    for (auto& s : src) s *= cs.q / total; // q per metre of y (dy = 1)
     t.setSources(src);
     const double dt = 0.9 * t.stableDt();
     const double tEnd = cs.tEnd;
@@ -92,7 +91,8 @@ double error2D(const Case2D& cs, double h, double* massBalance = nullptr)
         {
             const double x = g.xc(i);
             if (x < 3.0 || x > 10.0) continue;
-            const double exact = channelBoxSource(cs.q, cs.u, cs.k, cs.xs, cs.zs, cs.H, cs.b, x, g.zc(i, 0, k));
+            const double exact =
+                channelBoxSource(cs.q, cs.u, cs.k, cs.xs, cs.zs, cs.H, cs.b, x, g.zc(i, 0, k));
             const double e = t.c[g.idx(i, 0, k)] - exact;
             num += e * e;
             den += exact * exact;
@@ -125,8 +125,9 @@ TEST(EulerianAnalytic, LimitedQuickConvergesAboveFirstOrder)
     Case2D cs;
     const double e1 = error2D(cs, 0.2), e2 = error2D(cs, 0.1), e3 = error2D(cs, 0.05);
     const double p1 = std::log2(e1 / e2), p2 = std::log2(e2 / e3);
-    std::printf("limited QUICK: relative L2 errors h=0.2 %.3e  h=0.1 %.3e  h=0.05 %.3e; observed order %.2f, %.2f\n",
-                e1, e2, e3, p1, p2);
+    std::printf(
+        "limited QUICK: relative L2 errors h=0.2 %.3e  h=0.1 %.3e  h=0.05 %.3e; observed order %.2f, %.2f\n",
+        e1, e2, e3, p1, p2);
     EXPECT_GT(p1, 1.3);
     EXPECT_GT(p2, 1.3);
     EXPECT_LT(e3, 1e-3);
@@ -224,7 +225,7 @@ TEST(EulerianWind, AdjustedWindIsDivergenceFreeAndStopsAtTheLid)
     EXPECT_LT(worst, 1e-12 * scale);
     EXPECT_LT(f.maxTopFlux, 1e-9 * scale);
     for (int j = 0; j < ny; ++j)
-        for (int i = 0; i < nx; ++i) EXPECT_EQ(f.fs[j * nx + i], 0.0);   // ground
+        for (int i = 0; i < nx; ++i) EXPECT_EQ(f.fs[j * nx + i], 0.0); // ground
 }
 
 TEST(EulerianWind, UniformConcentrationStaysUniformOverTerrain)
@@ -288,8 +289,8 @@ namespace
 // u[k] in layer k, explicit AB2, limited QUICK, K_H/K_V diffusion, zero-flux
 // ground, lid and side walls, inflow of zero, upwind outflow.
 std::vector<double> cartesianReference(int nx, int ny, int nz, double dx, double dy, double dz,
-                                       const std::vector<double>& u, double kH, double kV,
-                                       int si, int sj, int sk, double q, double dt, int steps)
+                                       const std::vector<double>& u, double kH, double kV, int si, int sj,
+                                       int sk, double q, double dt, int steps)
 {
     auto id = [=](int i, int j, int k) { return (static_cast<std::size_t>(k) * ny + j) * nx + i; };
     std::vector<double> c(static_cast<std::size_t>(nx) * ny * nz, 0.0), r(c.size()), rp(c.size());
@@ -312,8 +313,9 @@ std::vector<double> cartesianReference(int nx, int ny, int nz, double dx, double
                 for (int i = 1; i < nx; ++i)
                 {
                     const double cu = c[id(std::max(i - 2, 0), j, k)];
-                    const double phi = F * lim(i >= 2 ? cu : c[id(i - 1, j, k)], c[id(i - 1, j, k)], c[id(i, j, k)])
-                                       - kH * dy * dz / dx * (c[id(i, j, k)] - c[id(i - 1, j, k)]);
+                    const double phi =
+                        F * lim(i >= 2 ? cu : c[id(i - 1, j, k)], c[id(i - 1, j, k)], c[id(i, j, k)])
+                        - kH * dy * dz / dx * (c[id(i, j, k)] - c[id(i - 1, j, k)]);
                     r[id(i - 1, j, k)] -= phi;
                     r[id(i, j, k)] += phi;
                 }
@@ -347,29 +349,29 @@ TEST(EulerianFlatTerrain, TransformEqualsCartesianScheme)
     const int nx = 16, ny = 9, nz = 6;
     const double dx = 50, dy = 40, depth = 300, u10 = 2.0, p = 0.25;
     for (double elevation : {0.0, 350.0})
-    for (bool trueHorizontal : {true, false})
-    {
-        TerrainGrid g = TerrainGrid::box(nx, ny, nz, 0.0, 0.0, dx, dy, elevation + depth, elevation);
-        WindModel wind(g, p, 10.0);
-        Transport t(g, 30.0, 2.0, Advection::LimitedQuick, trueHorizontal);
-        t.setFlow(wind.flow(u10, 270.0));
-        std::vector<double> src(g.size(), 0.0);
-        src[g.idx(3, 4, 1)] = 1.0;
-        t.setSources(src);
-        const double dt = 0.8 * t.stableDt();
-        for (int n = 0; n < 150; ++n) t.step(dt);
-
-        // layer speeds: the power law averaged over each layer, written out here
-        const double dz = depth / nz;
-        std::vector<double> u(nz);
-        for (int k = 0; k < nz; ++k)
+        for (bool trueHorizontal : {true, false})
         {
-            const double a = k * dz, b = (k + 1) * dz;
-            u[k] = u10 * 10.0 / (p + 1) * (std::pow(b / 10.0, p + 1) - std::pow(a / 10.0, p + 1)) / dz;
+            TerrainGrid g = TerrainGrid::box(nx, ny, nz, 0.0, 0.0, dx, dy, elevation + depth, elevation);
+            WindModel wind(g, p, 10.0);
+            Transport t(g, 30.0, 2.0, Advection::LimitedQuick, trueHorizontal);
+            t.setFlow(wind.flow(u10, 270.0));
+            std::vector<double> src(g.size(), 0.0);
+            src[g.idx(3, 4, 1)] = 1.0;
+            t.setSources(src);
+            const double dt = 0.8 * t.stableDt();
+            for (int n = 0; n < 150; ++n) t.step(dt);
+
+            // layer speeds: the power law averaged over each layer, written out here
+            const double dz = depth / nz;
+            std::vector<double> u(nz);
+            for (int k = 0; k < nz; ++k)
+            {
+                const double a = k * dz, b = (k + 1) * dz;
+                u[k] = u10 * 10.0 / (p + 1) * (std::pow(b / 10.0, p + 1) - std::pow(a / 10.0, p + 1)) / dz;
+            }
+            const auto ref = cartesianReference(nx, ny, nz, dx, dy, dz, u, 30.0, 2.0, 3, 4, 1, 1.0, dt, 150);
+            double cmax = 0;
+            for (double v : ref) cmax = std::max(cmax, v);
+            for (std::size_t m = 0; m < ref.size(); ++m) ASSERT_NEAR(t.c[m], ref[m], 1e-10 * cmax) << m;
         }
-        const auto ref = cartesianReference(nx, ny, nz, dx, dy, dz, u, 30.0, 2.0, 3, 4, 1, 1.0, dt, 150);
-        double cmax = 0;
-        for (double v : ref) cmax = std::max(cmax, v);
-        for (std::size_t m = 0; m < ref.size(); ++m) ASSERT_NEAR(t.c[m], ref[m], 1e-10 * cmax) << m;
-    }
 }

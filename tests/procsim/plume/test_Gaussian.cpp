@@ -45,7 +45,7 @@ PlumeHour westWind(double u10, int cls, double zi)
 {
     PlumeHour h;
     h.u10 = u10;
-    h.directionFrom = 270;   // blows towards +x
+    h.directionFrom = 270; // blows towards +x
     h.cls = cls;
     h.mixingHeight = zi;
     return h;
@@ -77,20 +77,20 @@ TEST(Isc3RuralCurves, HandComputedIncludingRangeBoundariesAndCap)
         {2, 199.9999, 36.16622559, 20.23260104},  // B below 0.20 km
         {2, 200.0, 36.16624198, 20.23252497},     // B at 0.20 km
         {2, 1000.0, 154.1197517, 109.3},
-        {3, 2000.0, 193.4454664, 115.2576136},    // C: 61.141 x^0.91465
-        {3, 150000.0, 8640.478505, 5000},         // C: capped
-        {4, 299.9999, 22.61085917, 12.09299809},  // D below 0.30 km
-        {4, 300.0, 22.6108661, 12.09298272},      // D at 0.30 km
-        {4, 10000.0, 543.6163326, 134.8851002},   // D at 10 km: 36.650 x^0.56589
-        {5, 99.9999, 6.123370097, 3.53419439},    // E below 0.10 km
-        {5, 100.0, 6.123375772, 3.534869244},     // E at 0.10 km
+        {3, 2000.0, 193.4454664, 115.2576136},   // C: 61.141 x^0.91465
+        {3, 150000.0, 8640.478505, 5000},        // C: capped
+        {4, 299.9999, 22.61085917, 12.09299809}, // D below 0.30 km
+        {4, 300.0, 22.6108661, 12.09298272},     // D at 0.30 km
+        {4, 10000.0, 543.6163326, 134.8851002},  // D at 10 km: 36.650 x^0.56589
+        {5, 99.9999, 6.123370097, 3.53419439},   // E below 0.10 km
+        {5, 100.0, 6.123375772, 3.534869244},    // E at 0.10 km
         {5, 5000.0, 218.8610166, 55.7080905},
         {5, 19999.99, 752.3210307, 109.3027244},
         {5, 20000.0, 752.3213625, 109.3027251},
-        {6, 699.9999, 24.45649433, 10.93010043},  // F below 0.70 km
-        {6, 700.0, 24.45649753, 10.9298441},      // F at 0.70 km
+        {6, 699.9999, 24.45649433, 10.93010043}, // F below 0.70 km
+        {6, 700.0, 24.45649753, 10.9298441},     // F at 0.70 km
         {6, 20000.0, 500.9488059, 60.29440211},
-        {6, 60000.0, 1308.696345, 83.25506022},   // F beyond 60 km: 34.219 x^0.21716
+        {6, 60000.0, 1308.696345, 83.25506022}, // F beyond 60 km: 34.219 x^0.21716
     };
     const Isc3RuralCurves pg;
     for (const auto& p : points)
@@ -98,7 +98,7 @@ TEST(Isc3RuralCurves, HandComputedIncludingRangeBoundariesAndCap)
         EXPECT_NEAR(pg.sigmaY(p.cls, p.x), p.sy, 2e-9 * p.sy) << className(p.cls) << " x = " << p.x;
         EXPECT_NEAR(pg.sigmaZ(p.cls, p.x), p.sz, 2e-9 * p.sz) << className(p.cls) << " x = " << p.x;
     }
-    EXPECT_NEAR(pg.sigmaY(4, 1000), 68.13, 0.005);   // the guide's rounded figures
+    EXPECT_NEAR(pg.sigmaY(4, 1000), 68.13, 0.005); // the guide's rounded figures
     EXPECT_NEAR(pg.sigmaZ(4, 1000), 32.09, 0.005);
 }
 
@@ -119,7 +119,7 @@ TEST(DispersionCurves, KnownNamesDefaultFirst)
 {
     const auto& names = DispersionCurves::curveNames();
     ASSERT_EQ(names.size(), 2u);
-    EXPECT_EQ(names[0], GaussianOptions{}.curves);   // the default is listed first
+    EXPECT_EQ(names[0], GaussianOptions{}.curves); // the default is listed first
     EXPECT_EQ(names[0], "isc3_rural");
     for (const auto& n : names) EXPECT_NE(DispersionCurves::create(n), nullptr) << n;
     EXPECT_EQ(DispersionCurves::create("pasquill"), nullptr);
@@ -183,8 +183,10 @@ TEST(GaussianHandComputed, GroundReflection)
 TEST(GaussianHandComputed, MixingHeightReflectionAndUniformMixing)
 {
     GaussianModel m({point(0, 0, 20, 10)}, briggs());
-    EXPECT_NEAR(m.concentration(westWind(3.0, 3, 200), receptor(3000, 0, 1.5)), 2.191467e-8, 1e-5 * 2.191467e-8);
-    EXPECT_NEAR(m.concentration(westWind(3.0, 3, 100), receptor(3000, 0, 1.5)), 4.286902e-8, 1e-5 * 4.286902e-8);
+    EXPECT_NEAR(m.concentration(westWind(3.0, 3, 200), receptor(3000, 0, 1.5)), 2.191467e-8,
+                1e-5 * 2.191467e-8);
+    EXPECT_NEAR(m.concentration(westWind(3.0, 3, 100), receptor(3000, 0, 1.5)), 4.286902e-8,
+                1e-5 * 4.286902e-8);
     // release above the mixing layer (unstable/neutral): nothing at the ground
     EXPECT_EQ(m.concentration(westWind(3.0, 3, 15), receptor(3000, 0, 1.5)), 0.0);
     // upwind receptor: nothing
@@ -210,12 +212,14 @@ TEST(GaussianHandComputed, VolumeSourceAsVirtualPointSource)
     v.height = 10.75;
     v.rate = 5e-3;
     GaussianModel m({v}, briggs());
-    EXPECT_NEAR(m.concentration(westWind(2.0, 4, 5000), receptor(400, 0, 0)), 6.835578e-7, 1e-5 * 6.835578e-7);
+    EXPECT_NEAR(m.concentration(westWind(2.0, 4, 5000), receptor(400, 0, 0)), 6.835578e-7,
+                1e-5 * 6.835578e-7);
     // ISC3 curves: sy(xy) = 10 at xy = 123.897209 m, sz(xz) = 10 at
     // xz = 241.116040 m (roots of the formulas above), so sy = sy(523.897209)
     // = 37.726602, sz = sz(641.116040) = 22.382138: C = 8.30687421e-7 kg/m3
     GaussianModel pg({v}, GaussianOptions{});
-    EXPECT_NEAR(pg.concentration(westWind(2.0, 4, 5000), receptor(400, 0, 0)), 8.30687421e-7, 1e-6 * 8.30687421e-7);
+    EXPECT_NEAR(pg.concentration(westWind(2.0, 4, 5000), receptor(400, 0, 0)), 8.30687421e-7,
+                1e-6 * 8.30687421e-7);
 }
 
 TEST(GaussianHandComputed, SmallAreaSourceActsAsPointSourceFarAway)
@@ -248,9 +252,10 @@ TEST(GaussianDeposition, SourceDepletionClassAGroundRelease)
     with.curves = "briggs_rural";
     GaussianModel dep({point(0, 0, 0, 1)}, with);
     GaussianModel none({point(0, 0, 0, 1)}, briggs());
-    const auto h = westWind(2.0, 1, 5000);   // ground source: u = u10
-    const double ratio = dep.concentration(h, receptor(800, 0, 0)) / none.concentration(h, receptor(800, 0, 0));
-    EXPECT_NEAR(ratio, 0.875168612, 2e-4);   // tabulated integral, interpolated in ln x
+    const auto h = westWind(2.0, 1, 5000); // ground source: u = u10
+    const double ratio =
+        dep.concentration(h, receptor(800, 0, 0)) / none.concentration(h, receptor(800, 0, 0));
+    EXPECT_NEAR(ratio, 0.875168612, 2e-4); // tabulated integral, interpolated in ln x
     EXPECT_NEAR(dep.depletion(1, 2.0, 0.0, 800), 0.875168612, 1e-6);
 }
 
@@ -264,7 +269,8 @@ TEST(GaussianDeposition, SourceDepletionIsc3ClassCGroundRelease)
     GaussianModel dep({point(0, 0, 0, 1)}, with);
     GaussianModel none({point(0, 0, 0, 1)}, GaussianOptions{});
     const auto h = westWind(2.0, 3, 5000);
-    const double ratio = dep.concentration(h, receptor(800, 0, 0)) / none.concentration(h, receptor(800, 0, 0));
+    const double ratio =
+        dep.concentration(h, receptor(800, 0, 0)) / none.concentration(h, receptor(800, 0, 0));
     EXPECT_NEAR(ratio, 0.7217240041312871, 2e-4);
     EXPECT_NEAR(dep.depletion(3, 2.0, 0.0, 800), 0.7217240041312871, 1e-6);
 }
@@ -289,17 +295,17 @@ TEST(GaussianStability, PasquillTableAndSunElevation)
     EXPECT_NEAR(solarElevationDeg(14.5, 172, 12.0), 81.05, 0.02);
     // 21 March (day 80), 6 h: the sun on the horizon
     EXPECT_NEAR(solarElevationDeg(0.0, 80, 6.0), 0.0, 0.5);
-    EXPECT_EQ(stabilityClass(1.5, 1, 70), 1);   // strong sun, light wind: A
-    EXPECT_EQ(stabilityClass(2.5, 1, 70), 2);   // A-B -> B
-    EXPECT_EQ(stabilityClass(4.0, 1, 45), 3);   // moderate, 3-5 m/s: B-C -> C
-    EXPECT_EQ(stabilityClass(4.0, 6, 70), 3);   // > 4 oktas: strong -> moderate: C
-    EXPECT_EQ(stabilityClass(1.5, 2, 20), 2);   // slight, < 2 m/s: B
-    EXPECT_EQ(stabilityClass(7.0, 2, 70), 3);   // strong, > 6 m/s: C
-    EXPECT_EQ(stabilityClass(5.5, 2, 45), 4);   // C-D -> D
-    EXPECT_EQ(stabilityClass(3.0, 8, 70), 4);   // overcast: D
-    EXPECT_EQ(stabilityClass(2.5, 5, -10), 5);  // cloudy night, 2-3 m/s: E
-    EXPECT_EQ(stabilityClass(2.5, 1, -10), 6);  // clear night: F
-    EXPECT_EQ(stabilityClass(4.0, 1, -10), 5);  // clear night, 3-5 m/s: E
-    EXPECT_EQ(stabilityClass(4.0, 5, -10), 4);  // cloudy night, 3-5 m/s: D
+    EXPECT_EQ(stabilityClass(1.5, 1, 70), 1);  // strong sun, light wind: A
+    EXPECT_EQ(stabilityClass(2.5, 1, 70), 2);  // A-B -> B
+    EXPECT_EQ(stabilityClass(4.0, 1, 45), 3);  // moderate, 3-5 m/s: B-C -> C
+    EXPECT_EQ(stabilityClass(4.0, 6, 70), 3);  // > 4 oktas: strong -> moderate: C
+    EXPECT_EQ(stabilityClass(1.5, 2, 20), 2);  // slight, < 2 m/s: B
+    EXPECT_EQ(stabilityClass(7.0, 2, 70), 3);  // strong, > 6 m/s: C
+    EXPECT_EQ(stabilityClass(5.5, 2, 45), 4);  // C-D -> D
+    EXPECT_EQ(stabilityClass(3.0, 8, 70), 4);  // overcast: D
+    EXPECT_EQ(stabilityClass(2.5, 5, -10), 5); // cloudy night, 2-3 m/s: E
+    EXPECT_EQ(stabilityClass(2.5, 1, -10), 6); // clear night: F
+    EXPECT_EQ(stabilityClass(4.0, 1, -10), 5); // clear night, 3-5 m/s: E
+    EXPECT_EQ(stabilityClass(4.0, 5, -10), 4); // cloudy night, 3-5 m/s: D
     EXPECT_EQ(stabilityClass(6.5, 0, -10), 4);
 }

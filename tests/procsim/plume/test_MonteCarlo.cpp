@@ -43,7 +43,7 @@ TEST(GammaFit, RecoversKnownParametersByMaximumLikelihood)
 TEST(GammaFit, MomentsWhenTheDataHoldZeros)
 {
     auto x = gammaSamples(3.0, 2.0, 20000, 11);
-    for (int i = 0; i < 200; ++i) x[i] = 0.0;   // 1 % calm hours
+    for (int i = 0; i < 200; ++i) x[i] = 0.0; // 1 % calm hours
     const GammaFit f = fitGamma(x);
     EXPECT_TRUE(f.moments);
     EXPECT_NEAR(f.shape * f.scale, 0.99 * 6.0, 0.1);

@@ -20,11 +20,11 @@ TEST(EsriGrid, ReadsRowsNorthFirstAndCellCentres)
              "10 20 30\n1 2 3\n";
     }
     const EsriGrid g = readEsriGrid(path);
-    EXPECT_DOUBLE_EQ(g.xll, 0.0);   // centre of the lower-left cell at 50 -> corner at 0
-    EXPECT_DOUBLE_EQ(g.at(0, 0), 1.0);    // southern row is the last one written
+    EXPECT_DOUBLE_EQ(g.xll, 0.0);      // centre of the lower-left cell at 50 -> corner at 0
+    EXPECT_DOUBLE_EQ(g.at(0, 0), 1.0); // southern row is the last one written
     EXPECT_DOUBLE_EQ(g.at(2, 1), 30.0);
     EXPECT_DOUBLE_EQ(g.sample(150, 50), 2.0);
-    EXPECT_DOUBLE_EQ(g.sample(100, 100), 0.25 * (1 + 2 + 10 + 20));   // bilinear
+    EXPECT_DOUBLE_EQ(g.sample(100, 100), 0.25 * (1 + 2 + 10 + 20)); // bilinear
     std::remove(path.c_str());
 }
 
@@ -54,11 +54,11 @@ Source areaSource()
     Source a;
     a.name = "A";
     a.type = Source::Type::Area;
-    a.x = 333;   // x 248..418, y 356..446 m
+    a.x = 333; // x 248..418, y 356..446 m
     a.y = 401;
     a.lx = 170;
     a.ly = 90;
-    a.height = 3;   // below the lowest cell centre (~10 m) everywhere
+    a.height = 3; // below the lowest cell centre (~10 m) everywhere
     a.rate = 0.01;
     return a;
 }
@@ -72,7 +72,7 @@ Source volumeSource()
     v.top = 40;
     v.height = 20;
     v.rate = 0.004;
-    v.controlled = false;   // not subject to the cut
+    v.controlled = false; // not subject to the cut
     return v;
 }
 
@@ -100,7 +100,7 @@ TEST(Sources, AreaSourceFillsTheGroundLayerByFootprint)
     double ground = 0;
     for (int j = 0; j < g.ny; ++j)
         for (int i = 0; i < g.nx; ++i) ground += q[g.idx(i, j, 0)];
-    EXPECT_NEAR(ground, emitted, 1e-15);   // nothing above the lowest layer
+    EXPECT_NEAR(ground, emitted, 1e-15); // nothing above the lowest layer
     EXPECT_NEAR(q[g.idx(6, 7, 0)], emitted * 50 * 44 / (170 * 90), 1e-15);
     // column (4, 7) spans x 200..250 and holds the strip 248..250
     EXPECT_NEAR(q[g.idx(4, 7, 0)], emitted * 2 * 44 / (170 * 90), 1e-15);
@@ -111,7 +111,7 @@ TEST(Sources, VolumeSourceSharedByHeightOverlap)
 {
     const TerrainGrid g = tiltedGrid();
     const auto q = distributeSources(g, {volumeSource()}, 0.8);
-    EXPECT_NEAR(sum(q), 0.004, 1e-15);   // uncontrolled: no cut
+    EXPECT_NEAR(sum(q), 0.004, 1e-15); // uncontrolled: no cut
     const double column = 0.004 * 50 * 44 / (170 * 90);
     const double d = g.depth(6, 7);
     double inColumn = 0;
@@ -124,7 +124,7 @@ TEST(Sources, VolumeSourceSharedByHeightOverlap)
     }
     EXPECT_NEAR(inColumn, column, 1e-15);
     ASSERT_GT(d * g.fFace[1], 0.0);
-    ASSERT_LT(d * g.fFace[1], 40.0);   // the source reaches above the lowest layer
+    ASSERT_LT(d * g.fFace[1], 40.0); // the source reaches above the lowest layer
     EXPECT_GT(q[g.idx(6, 7, 1)], 0.0);
 }
 
@@ -136,7 +136,7 @@ TEST(Sources, SourcesAddAndOneOutsideIsAnError)
     const auto both = distributeSources(g, {areaSource(), volumeSource()}, 0.8);
     for (std::size_t n = 0; n < both.size(); ++n) ASSERT_NEAR(both[n], a[n] + v[n], 1e-18);
     Source out = areaSource();
-    out.x = 990;   // extends past x = 1000
+    out.x = 990; // extends past x = 1000
     EXPECT_THROW(distributeSources(g, {out}, 0.0), procsim::InputError);
 }
 
@@ -153,12 +153,12 @@ TEST(Sources, PointSourceTrilinearConservesEmissionAndPosition)
     struct Case
     {
         double x, y, height;
-        bool interior;   // between the outermost centres in every direction
+        bool interior; // between the outermost centres in every direction
     };
-    const double faceHeight = g.depth(6, 7) * g.fFace[3];   // an s-level over column (6, 7)
-    const Case cases[] = {{300, 350, faceHeight, true},   {325, 375, g.depth(6, 7) * g.fCell[2], true},
-                          {433.3, 512.7, 47.1, true},     {10, 790, 30, false},
-                          {612, 244, 2.0, false},         {140, 160, 440, false}};
+    const double faceHeight = g.depth(6, 7) * g.fFace[3]; // an s-level over column (6, 7)
+    const Case cases[] = {{300, 350, faceHeight, true}, {325, 375, g.depth(6, 7) * g.fCell[2], true},
+                          {433.3, 512.7, 47.1, true},   {10, 790, 30, false},
+                          {612, 244, 2.0, false},       {140, 160, 440, false}};
     for (const auto& c : cases)
     {
         Source p;
@@ -184,7 +184,8 @@ TEST(Sources, PointSourceTrilinearConservesEmissionAndPosition)
                     my += w * g.yc(j);
                     mz += w * g.heightAboveGround(i, j, k);
                 }
-        const std::string at = std::to_string(c.x) + ", " + std::to_string(c.y) + ", " + std::to_string(c.height);
+        const std::string at =
+            std::to_string(c.x) + ", " + std::to_string(c.y) + ", " + std::to_string(c.height);
         EXPECT_NEAR(total, 0.003, 1e-17) << at;
         EXPECT_LE(cells, 8) << at;
         if (c.interior)

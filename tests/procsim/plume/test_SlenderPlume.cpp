@@ -21,8 +21,8 @@ namespace
 // u C_x = K_H (C_xx + C_yy) + K_V C_zz + Q delta: with z' = z sqrt(K_H/K_V),
 // C = Q sqrt(K_H/K_V) / (4 pi K_H r') exp(-u (r' - x) / 2K_H); images at
 // 2nH +- zs for the no-flux ground (z = 0) and lid (z = H).
-double exactPointSource(double q, double u, double kH, double kV, double zs, double H, double x,
-                        double y, double z)
+double exactPointSource(double q, double u, double kH, double kV, double zs, double H, double x, double y,
+                        double z)
 {
     const double a = std::sqrt(kH / kV);
     double c = 0;
@@ -40,7 +40,7 @@ double exactPointSource(double q, double u, double kH, double kV, double zs, dou
 TEST(SlenderPlume, EulerianAndGaussianAgreeWithTheExactSolution)
 {
     const double u = 2.0, kH = 10.0, kV = 2.0, q = 1e-3, H = 200.0;
-    const double xs = 210, ys = 0, zs = 55;   // a cell centre
+    const double xs = 210, ys = 0, zs = 55; // a cell centre
     TerrainGrid g = TerrainGrid::box(100, 31, 20, 0.0, -310.0, 20.0, 20.0, H);
     WindModel wind(g, 0.0, 10.0);
     Transport t(g, kH, kV);
@@ -94,10 +94,13 @@ TEST(SlenderPlume, EulerianAndGaussianAgreeWithTheExactSolution)
                 worstG = std::max(worstG, std::abs(gau / exact - 1));
                 worstE = std::max(worstE, std::abs(eul / exact - 1));
                 worstEG = std::max(worstEG, std::abs(eul / gau - 1));
-                EXPECT_NEAR(gau, exact, tolGaussian * exact) << "Gaussian x=" << x << " y=" << y << " z=" << z;
-                EXPECT_NEAR(eul, exact, tolEulerian * exact) << "Eulerian x=" << x << " y=" << y << " z=" << z;
+                EXPECT_NEAR(gau, exact, tolGaussian * exact)
+                    << "Gaussian x=" << x << " y=" << y << " z=" << z;
+                EXPECT_NEAR(eul, exact, tolEulerian * exact)
+                    << "Eulerian x=" << x << " y=" << y << " z=" << z;
                 // the two errors may add, never more
-                EXPECT_NEAR(eul, gau, (tolGaussian + tolEulerian) * gau) << "x=" << x << " y=" << y << " z=" << z;
+                EXPECT_NEAR(eul, gau, (tolGaussian + tolEulerian) * gau)
+                    << "x=" << x << " y=" << y << " z=" << z;
             }
     std::printf("largest deviation from the exact solution: Gaussian %.2f %%, Eulerian %.2f %%; "
                 "Eulerian from Gaussian %.2f %%\n",
@@ -158,10 +161,10 @@ TEST(SlenderPlume, PointSourceResultDoesNotDependOnWhereTheFacesFall)
     // faces 0, 5, 15, ..., 195, 200 m: the 10 m cells of grid A shifted by 5 m
     for (int k = 1; k < b.nz; ++k) b.fFace[k] = (5.0 + 10.0 * (k - 1)) / H;
     for (int k = 0; k < b.nz; ++k) b.fCell[k] = 0.5 * (b.fFace[k] + b.fFace[k + 1]);
-    ASSERT_NEAR(b.xc(10) + 0.5 * b.dx, 210.0, 1e-9);   // the source on faces of grid B
+    ASSERT_NEAR(b.xc(10) + 0.5 * b.dx, 210.0, 1e-9); // the source on faces of grid B
     ASSERT_NEAR(b.yc(15) + 0.5 * b.dy, 0.0, 1e-9);
     ASSERT_NEAR(H * b.fFace[6], 55.0, 1e-9);
-    ASSERT_NEAR(a.zc(10, 15, 5), 55.0, 1e-9);          // and at a centre of grid A
+    ASSERT_NEAR(a.zc(10, 15, 5), 55.0, 1e-9); // and at a centre of grid A
 
     std::vector<std::array<double, 3>> receptors;
     for (double x : {610.0, 1010.0, 1510.0})
@@ -180,7 +183,8 @@ TEST(SlenderPlume, PointSourceResultDoesNotDependOnWhereTheFacesFall)
         for (double dx : {-10.0, 10.0})
             for (double dy : {-10.0, 10.0})
                 for (double dz : {-5.0, 5.0}) spread += exact(r, 210 + dx, dy, 55 + dz) / 8;
-        const std::string at = "x=" + std::to_string(r[0]) + " y=" + std::to_string(r[1]) + " z=" + std::to_string(r[2]);
+        const std::string at =
+            "x=" + std::to_string(r[0]) + " y=" + std::to_string(r[1]) + " z=" + std::to_string(r[2]);
         EXPECT_NEAR(ca[n], point, 0.021 * point) << "grid A " << at;
         EXPECT_NEAR(cb[n], spread, 0.021 * spread) << "grid B " << at;
         worstB = std::max(worstB, std::abs(cb[n] / spread - 1));
@@ -255,7 +259,8 @@ TEST(SlenderPlume, PointSource3DConvergesUnderRefinement)
 {
     const double e1 = error3D(1), e2 = error3D(2);
     const double p = std::log2(e1 / e2);
-    std::printf("3D box source, QUICK: relative L2 errors %.3e (40 m), %.3e (20 m); observed order %.2f\n", e1, e2, p);
+    std::printf("3D box source, QUICK: relative L2 errors %.3e (40 m), %.3e (20 m); observed order %.2f\n",
+                e1, e2, p);
     // measured: 6.52e-2, 1.47e-2, order 2.15 (README); two coarse grids are
     // pre-asymptotic, so the order is held to 2 +- 0.25 and the fine error
     // to what it reaches

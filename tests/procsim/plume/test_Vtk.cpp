@@ -28,7 +28,10 @@ using namespace procsim::plume;
 namespace
 {
 
-double terrain(double x, double y) { return 100.0 + 0.05 * x + 0.02 * y; }
+double terrain(double x, double y)
+{
+    return 100.0 + 0.05 * x + 0.02 * y;
+}
 
 struct VtsTest : ::testing::Test
 {
@@ -91,8 +94,8 @@ TEST_F(VtsTest, cornersFollowTheTerrain)
     double bottom[3], top[3];
     grid->GetPoint(0, bottom);
     grid->GetPoint(n - 1, top);
-    EXPECT_NEAR(bottom[2], terrain(g.xc(0), g.yc(0)), 1e-9);   // the ground
-    EXPECT_NEAR(top[2], 1000.0, 1e-9);                          // the lid
+    EXPECT_NEAR(bottom[2], terrain(g.xc(0), g.yc(0)), 1e-9); // the ground
+    EXPECT_NEAR(top[2], 1000.0, 1e-9);                       // the lid
 }
 
 TEST_F(VtsTest, cellValuesInPlace)
