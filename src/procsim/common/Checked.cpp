@@ -4,6 +4,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <set>
 
 #include "common/Cli.hpp"
@@ -18,6 +19,16 @@ std::string trimmed(const std::string& text)
     if (b == std::string::npos) return "";
     const auto e = text.find_last_not_of(" \t\r\n");
     return text.substr(b, e - b + 1);
+}
+
+std::ifstream openInput(const std::string& path, const std::string& what, const std::string& hint)
+{
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec))
+        throw InputError(path + ": is a directory, expected " + what);
+    std::ifstream in(path);
+    if (!in) throw InputError(path + ": cannot be read (" + hint + ")");
+    return in;
 }
 
 namespace

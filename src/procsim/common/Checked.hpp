@@ -3,6 +3,7 @@
 // checks names that become file names, so every input goes through the same
 // rules: a number is finite and fills the whole text, a step count fits in
 // memory and time, a name is usable as part of a file name.
+#include <fstream>
 #include <optional>
 #include <string>
 #include <vector>
@@ -12,6 +13,11 @@ namespace procsim
 
 // `text` without the blanks (space, tab, CR, LF) around it.
 std::string trimmed(const std::string& text);
+
+// The input file `path` open for reading, or an InputError naming it:
+// "<path>: is a directory, expected <what>" or "<path>: cannot be read (<hint>)".
+std::ifstream openInput(const std::string& path, const std::string& what,
+                        const std::string& hint = "missing file?");
 
 // The whole of `text` (surrounding blanks allowed) as a finite number, or
 // nothing: "12.5abc", "", "inf", ".nan" and overflowing values like 1e400

@@ -211,11 +211,7 @@ std::size_t CsvTable::column(const std::string& name, const std::string& file) c
 
 CsvTable readCsv(const std::string& path, bool allowMissing)
 {
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec))
-        throw InputError(path + ": is a directory, expected a CSV file");
-    std::ifstream in(path);
-    if (!in) throw InputError(path + ": cannot be read (missing file?)");
+    std::ifstream in = openInput(path, "a CSV file");
     CsvTable table;
     std::string line;
     std::size_t lineNo = 0;

@@ -62,16 +62,7 @@ std::string relativeTo(const std::string& dir, const std::string& path)
 
 YamlInput YamlInput::load(const std::string& path)
 {
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec))
-    {
-        throw InputError(path + ": is a directory, expected an input file");
-    }
-    std::ifstream in(path);
-    if (!in)
-    {
-        throw InputError(path + ": cannot be read (missing file?)");
-    }
+    openInput(path, "an input file");
     try
     {
         YAML::Node root = YAML::LoadFile(path);

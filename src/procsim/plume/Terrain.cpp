@@ -46,11 +46,7 @@ std::string lower(std::string s)
 
 EsriGrid readEsriGrid(const std::string& path)
 {
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec))
-        throw InputError(path + ": is a directory, expected a terrain grid file");
-    std::ifstream in(path);
-    if (!in) throw InputError(path + ": cannot be read (missing terrain file?)");
+    std::ifstream in = openInput(path, "a terrain grid file", "missing terrain file?");
 
     EsriGrid g;
     bool haveNodata = false;
