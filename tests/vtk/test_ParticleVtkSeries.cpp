@@ -38,7 +38,7 @@ void expectFloat(double expected, double actual, const std::string& what)
     EXPECT_NEAR(actual, expected, 0.5 * ulp * std::abs(expected) + 1e-45) << what;
 }
 
-class ParticleVtkSeriesTest : public ::testing::Test
+class ParticleVtkFiles : public ::testing::Test
 {
 protected:
     fs::path dir = fs::temp_directory_path() / ("particleVtk_" + std::to_string(::getpid()));
@@ -71,7 +71,7 @@ protected:
 
 } // namespace
 
-TEST_F(ParticleVtkSeriesTest, geometryIsExactInDouble)
+TEST_F(ParticleVtkFiles, GeometryIsExactInDouble)
 {
     writeSample("0.5");
     auto poly = read("particles_0.5.vtp");
@@ -98,7 +98,7 @@ TEST_F(ParticleVtkSeriesTest, geometryIsExactInDouble)
     }
 }
 
-TEST_F(ParticleVtkSeriesTest, fieldsInSinglePrecision)
+TEST_F(ParticleVtkFiles, FieldsInSinglePrecision)
 {
     writeSample("0.5");
     auto poly = read("particles_0.5.vtp");
@@ -131,7 +131,7 @@ TEST_F(ParticleVtkSeriesTest, fieldsInSinglePrecision)
     EXPECT_EQ(time->GetTuple1(0), 0.5);
 }
 
-TEST_F(ParticleVtkSeriesTest, binaryCompressedAppended)
+TEST_F(ParticleVtkFiles, BinaryCompressedAppended)
 {
     writeSample("0.5");
     std::ifstream in(dir / "particles_0.5.vtp", std::ios::binary);
@@ -148,7 +148,7 @@ TEST_F(ParticleVtkSeriesTest, binaryCompressedAppended)
 
 // The collection lists each file on disk once, in time order, also when a
 // restarted run writes a time again; no temporary files are left behind
-TEST_F(ParticleVtkSeriesTest, collectionInTimeOrder)
+TEST_F(ParticleVtkFiles, CollectionInTimeOrder)
 {
     for (const char* t : {"0.2", "0.1", "0.15", "0.1"}) writeSample(t);
     vtkNew<vtkXMLDataParser> parser;

@@ -33,7 +33,7 @@ double terrain(double x, double y)
     return 100.0 + 0.05 * x + 0.02 * y;
 }
 
-struct VtsTest : ::testing::Test
+struct PlumeVts : ::testing::Test
 {
     // stretched levels (beta 1.5) over a tilted plane
     TerrainGrid g{6, 4, 5, -300.0, 200.0, 100.0, 150.0, 1000.0, 1.5, terrain};
@@ -70,7 +70,7 @@ double cornerTerrain(const TerrainGrid& g, int i, int j)
 
 } // namespace
 
-TEST_F(VtsTest, cornersFollowTheTerrain)
+TEST_F(PlumeVts, CornersFollowTheTerrain)
 {
     auto grid = read();
     int dims[3];
@@ -98,7 +98,7 @@ TEST_F(VtsTest, cornersFollowTheTerrain)
     EXPECT_NEAR(top[2], 1000.0, 1e-9);                       // the lid
 }
 
-TEST_F(VtsTest, cellValuesInPlace)
+TEST_F(PlumeVts, CellValuesInPlace)
 {
     auto grid = read();
     vtkDataArray* c = grid->GetCellData()->GetArray("PM10_ug_m3");
@@ -119,7 +119,7 @@ TEST_F(VtsTest, cellValuesInPlace)
             }
 }
 
-TEST_F(VtsTest, compressedAppended)
+TEST_F(PlumeVts, CompressedAppended)
 {
     std::ifstream in(dir / "C_1h.vts", std::ios::binary);
     const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -128,7 +128,7 @@ TEST_F(VtsTest, compressedAppended)
     EXPECT_FALSE(fs::exists(dir / "C_1h.vts.tmp"));
 }
 
-TEST_F(VtsTest, collectionListsTheSnapshots)
+TEST_F(PlumeVts, CollectionListsTheSnapshots)
 {
     writePvd((dir / "C.pvd").string(), {{3600.0, "vts/C_1h.vts"}, {7200.0, "vts/C_2h.vts"}});
     vtkNew<vtkXMLDataParser> parser;
