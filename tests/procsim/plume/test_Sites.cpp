@@ -42,6 +42,54 @@ TEST(EsriGrid, NodataIsAnError)
 namespace
 {
 
+// The message readEsriGrid refuses `text` with ("" if it reads it).
+std::string refusal(const std::string& text)
+{
+    const auto path = (std::filesystem::temp_directory_path() / "plume_esri_bad.asc").string();
+    {
+        std::ofstream f(path);
+        f << text;
+    }
+    std::string message;
+    try
+    {
+        readEsriGrid(path);
+    }
+    catch (const procsim::InputError& e)
+    {
+        message = e.what();
+    }
+    std::remove(path.c_str());
+    return message;
+}
+
+} // namespace
+
+// Each refusal is one line naming the file, the line and the key or value.
+TEST(EsriGrid, BadHeaderOrRowNamesTheLine)
+{
+    const std::string header =
+        "ncols 3\nnrows 2\nxllcorner 0\nyllcorner 0\ncellsize 10\nNODATA_value -9999\n";
+    const auto endsWith = [](const std::string& message, const std::string& tail) {
+        return message.size() >= tail.size()
+               && message.compare(message.size() - tail.size(), tail.size(), tail) == 0;
+    };
+    EXPECT_PRED2(endsWith, refusal(header + "ncols 4\n1 2 3\n"),
+                 ".asc: line 7: header key 'ncols' is given twice");
+    EXPECT_PRED2(endsWith, refusal("ncols 3\nnrows 2\nfoo 1\n"),
+                 ".asc: line 3: unknown header key 'foo' (expected ncols, nrows, xllcorner, yllcorner, "
+                 "cellsize, NODATA_value)");
+    EXPECT_PRED2(endsWith, refusal("ncols 3.5\n"),
+                 ".asc: line 1: header key 'ncols' expected a whole number from 2 to 100000, got '3.5'");
+    EXPECT_PRED2(endsWith, refusal(header + "1 2 3\n4 5\n"),
+                 ".asc: line 8: expected 3 values (ncols), got 2");
+    EXPECT_PRED2(endsWith, refusal(header + "1 2 3\n4 5 6\n7 8 9\n"), ".asc: expected 2 rows (nrows), got 3");
+    EXPECT_PRED2(endsWith, refusal(header), ".asc: no elevation rows after the header");
+}
+
+namespace
+{
+
 // 20 x 16 columns of 50 m on a tilted plane, 8 stretched levels up to 600 m
 TerrainGrid tiltedGrid()
 {
