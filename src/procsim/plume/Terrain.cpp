@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -42,26 +43,77 @@ std::string lower(std::string s)
     return s;
 }
 
-} // namespace
-
-EsriGrid readEsriGrid(const std::string& path)
+// "<path>: line <n>: ", the start of every message about one line
+std::string atLine(const std::string& path, int lineNo)
 {
-    std::ifstream in = openInput(path, "a terrain grid file", "missing terrain file?");
+    return path + ": line " + std::to_string(lineNo) + ": ";
+}
 
-    EsriGrid g;
-    bool haveNodata = false;
-    double nodata = -9999;
-    bool centre = false;
+// What the header of an ESRI ASCII grid says, before it is checked.
+struct GridHeader
+{
+    EsriGrid grid; // ncols, nrows, lower-left corner, cell size
+    std::optional<double> nodata;
+    bool centre = false; // xllcenter/yllcenter given instead of the corner
     bool haveX = false, haveY = false, haveCell = false;
+    std::streampos dataStart; // where the first elevation row starts
+    int dataLine = 0;         // its line number; 0: no row after the header
+};
+
+// One header line "key value" (the value a finite number) into h.
+void readHeaderKey(const std::string& path, int lineNo, const std::string& key, const std::string& text,
+                   double value, GridHeader& h)
+{
+    const std::string k = lower(key);
+    EsriGrid& g = h.grid;
+    if (k == "ncols" || k == "nrows")
+    {
+        const auto n = parseInteger(text, 2, 100000);
+        if (!n)
+        {
+            throw InputError(atLine(path, lineNo) + "header key '" + key
+                             + "' expected a whole number from 2 to 100000, got '" + text + "'");
+        }
+        (k == "ncols" ? g.ncols : g.nrows) = static_cast<int>(*n);
+    }
+    else if (k == "xllcorner" || k == "xllcenter")
+    {
+        g.xll = value;
+        h.haveX = true;
+        h.centre = h.centre || k == "xllcenter";
+    }
+    else if (k == "yllcorner" || k == "yllcenter")
+    {
+        g.yll = value;
+        h.haveY = true;
+        h.centre = h.centre || k == "yllcenter";
+    }
+    else if (k == "cellsize")
+    {
+        g.cell = value;
+        h.haveCell = true;
+    }
+    else if (k == "nodata_value")
+    {
+        h.nodata = value;
+    }
+    else
+    {
+        throw InputError(atLine(path, lineNo) + "unknown header key '" + key
+                         + "' (expected ncols, nrows, xllcorner, yllcorner, cellsize, NODATA_value)");
+    }
+}
+
+// The "key value" lines up to the first line that starts with a number.
+GridHeader readHeader(std::istream& in, const std::string& path)
+{
+    GridHeader h;
     std::set<std::string> seenKeys;
     std::string line;
     int lineNo = 0;
-    std::streampos dataStart = in.tellg();
-    int dataLine = 0;
-    // header: "key value" lines until the first line starting with a number
     while (true)
     {
-        dataStart = in.tellg();
+        h.dataStart = in.tellg();
         if (!std::getline(in, line)) break;
         ++lineNo;
         std::istringstream ss(line);
@@ -70,7 +122,7 @@ EsriGrid readEsriGrid(const std::string& path)
         if (std::isdigit(static_cast<unsigned char>(key[0])) || key[0] == '-' || key[0] == '+'
             || key[0] == '.')
         {
-            dataLine = lineNo;
+            h.dataLine = lineNo;
             break;
         }
         std::string text, extra;
@@ -78,120 +130,83 @@ EsriGrid readEsriGrid(const std::string& path)
         const auto parsed = parseFinite(text);
         if (!parsed || (ss >> extra))
         {
-            throw InputError(path + ": line " + std::to_string(lineNo) + ": header key '" + key
-                             + "' expected a finite number, got '" + text + (extra.empty() ? "" : " " + extra)
-                             + "'");
+            throw InputError(atLine(path, lineNo) + "header key '" + key + "' expected a finite number, got '"
+                             + text + (extra.empty() ? "" : " " + extra) + "'");
         }
-        const double value = *parsed;
-        const std::string k = lower(key);
-        if (!seenKeys.insert(k).second)
-        {
-            throw InputError(path + ": line " + std::to_string(lineNo) + ": header key '" + key
-                             + "' is given twice");
-        }
-        if (k == "ncols" || k == "nrows")
-        {
-            const auto n = parseInteger(text, 2, 100000);
-            if (!n)
-            {
-                throw InputError(path + ": line " + std::to_string(lineNo) + ": header key '" + key
-                                 + "' expected a whole number from 2 to 100000, got '" + text + "'");
-            }
-            (k == "ncols" ? g.ncols : g.nrows) = static_cast<int>(*n);
-        }
-        else if (k == "xllcorner")
-        {
-            g.xll = value;
-            haveX = true;
-        }
-        else if (k == "yllcorner")
-        {
-            g.yll = value;
-            haveY = true;
-        }
-        else if (k == "xllcenter")
-        {
-            g.xll = value;
-            haveX = true;
-            centre = true;
-        }
-        else if (k == "yllcenter")
-        {
-            g.yll = value;
-            haveY = true;
-            centre = true;
-        }
-        else if (k == "cellsize")
-        {
-            g.cell = value;
-            haveCell = true;
-        }
-        else if (k == "nodata_value")
-        {
-            nodata = value;
-            haveNodata = true;
-        }
-        else
-        {
-            throw InputError(path + ": line " + std::to_string(lineNo) + ": unknown header key '" + key
-                             + "' (expected ncols, nrows, xllcorner, yllcorner, cellsize, "
-                               "NODATA_value)");
-        }
+        if (!seenKeys.insert(lower(key)).second)
+            throw InputError(atLine(path, lineNo) + "header key '" + key + "' is given twice");
+        readHeaderKey(path, lineNo, key, text, *parsed, h);
     }
+    return h;
+}
+
+// The header complete and in range; a centre given becomes the corner.
+void checkHeader(const std::string& path, GridHeader& h)
+{
+    EsriGrid& g = h.grid;
     if (g.ncols < 2 || g.nrows < 2)
         throw InputError(path + ": header expected ncols and nrows >= 2 (ESRI ASCII grid)");
-    if (!haveX || !haveY) throw InputError(path + ": header expected xllcorner and yllcorner");
-    if (!haveCell || !(g.cell > 0 && g.cell <= 1e5))
+    if (!h.haveX || !h.haveY) throw InputError(path + ": header expected xllcorner and yllcorner");
+    if (!h.haveCell || !(g.cell > 0 && g.cell <= 1e5))
         throw InputError(path + ": header expected cellsize > 0 and up to 1e5 m");
     if (!(std::fabs(g.xll) <= 1e7 && std::fabs(g.yll) <= 1e7))
         throw InputError(path + ": header expected xllcorner and yllcorner within 1e7 m of the origin");
-    if (centre)
+    if (h.centre)
     {
         g.xll -= 0.5 * g.cell;
         g.yll -= 0.5 * g.cell;
     }
-    if (dataLine == 0) throw InputError(path + ": no elevation rows after the header");
+    if (h.dataLine == 0) throw InputError(path + ": no elevation rows after the header");
+}
 
-    checkMemory(static_cast<double>(g.ncols) * g.nrows, 2 * sizeof(double), path,
-                "a terrain grid of " + std::to_string(g.ncols) + " x " + std::to_string(g.nrows) + " cells");
+// One row of elevations into rows; the number of values read.
+int readElevationRow(const std::string& path, int lineNo, const std::string& line,
+                     const std::optional<double>& nodata, std::vector<double>& rows)
+{
+    std::istringstream ss(line);
+    std::string tok;
+    int n = 0;
+    while (ss >> tok)
+    {
+        const auto parsed = parseFinite(tok);
+        const bool nodataCell = parsed && nodata && *parsed == *nodata;
+        if (!parsed || (!nodataCell && !(*parsed >= -1000 && *parsed <= 10000)))
+        {
+            throw InputError(atLine(path, lineNo) + "expected an elevation from -1000 to 10000 m, got '" + tok
+                             + "'");
+        }
+        if (nodataCell)
+        {
+            throw InputError(atLine(path, lineNo)
+                             + "NODATA cell in the terrain (fill every cell with an elevation)");
+        }
+        rows.push_back(*parsed);
+        ++n;
+    }
+    return n;
+}
+
+// The elevation rows as written (north first), ncols values in each of nrows.
+std::vector<double> readElevations(std::istream& in, const std::string& path, const GridHeader& h)
+{
+    const EsriGrid& g = h.grid;
     in.clear();
-    in.seekg(dataStart);
-    lineNo = dataLine - 1;
-    std::vector<double> rows; // as written: north first
+    in.seekg(h.dataStart);
+    std::vector<double> rows;
     rows.reserve(static_cast<std::size_t>(g.ncols) * g.nrows);
+    std::string line;
+    int lineNo = h.dataLine - 1;
     int rowCount = 0;
     while (std::getline(in, line))
     {
         ++lineNo;
-        std::istringstream ss(line);
-        std::string tok;
-        int n = 0;
-        bool any = false;
-        while (ss >> tok)
-        {
-            any = true;
-            const auto parsed = parseFinite(tok);
-            const bool nodataCell = parsed && haveNodata && *parsed == nodata;
-            if (!parsed || (!nodataCell && !(*parsed >= -1000 && *parsed <= 10000)))
-            {
-                throw InputError(path + ": line " + std::to_string(lineNo)
-                                 + ": expected an elevation from -1000 to 10000 m, got '" + tok + "'");
-            }
-            const double v = *parsed;
-            if (haveNodata && v == nodata)
-            {
-                throw InputError(path + ": line " + std::to_string(lineNo)
-                                 + ": NODATA cell in the terrain (fill every cell with an elevation)");
-            }
-            rows.push_back(v);
-            ++n;
-        }
-        if (!any) continue;
+        const int n = readElevationRow(path, lineNo, line, h.nodata, rows);
+        if (n == 0) continue;
         ++rowCount;
         if (n != g.ncols)
         {
-            throw InputError(path + ": line " + std::to_string(lineNo) + ": expected "
-                             + std::to_string(g.ncols) + " values (ncols), got " + std::to_string(n));
+            throw InputError(atLine(path, lineNo) + "expected " + std::to_string(g.ncols)
+                             + " values (ncols), got " + std::to_string(n));
         }
     }
     if (rowCount != g.nrows)
@@ -199,6 +214,21 @@ EsriGrid readEsriGrid(const std::string& path)
         throw InputError(path + ": expected " + std::to_string(g.nrows) + " rows (nrows), got "
                          + std::to_string(rowCount));
     }
+    return rows;
+}
+
+} // namespace
+
+EsriGrid readEsriGrid(const std::string& path)
+{
+    std::ifstream in = openInput(path, "a terrain grid file", "missing terrain file?");
+    GridHeader h = readHeader(in, path);
+    checkHeader(path, h);
+    EsriGrid g = h.grid;
+    checkMemory(static_cast<double>(g.ncols) * g.nrows, 2 * sizeof(double), path,
+                "a terrain grid of " + std::to_string(g.ncols) + " x " + std::to_string(g.nrows) + " cells");
+    const std::vector<double> rows = readElevations(in, path, h);
+    // stored south first: row j of z is the j-th row from the south
     g.z.resize(rows.size());
     for (int r = 0; r < g.nrows; ++r)
     {
