@@ -98,7 +98,7 @@ class Run:
 
     def summary(self):
         f = self.final
-        return ('%s: %s, %d particles, u_s = %g m/s, %g s: M_final %.3f (papers, left-right), '
+        return ('%s: %s, %d particles, u_s = %g m/s, %.3g s: M_final %.3f (papers, left-right), '
                 'Lacey %.3f; lower-upper %.3f, Lacey %.3f; %d sampling cells of %.0f particles'
                 % (self.label, 'no draft plates' if self.vessel == 'no-plates' else
                    'draft plates', self.n, self.u, self.t[-1], f['M_papers left-right'],
