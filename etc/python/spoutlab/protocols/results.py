@@ -298,7 +298,9 @@ def mixing_section(case):
                      'papers\' M, left-right halves; %s; %s s at %.1f m/s; Lacey %s' % (
                          settings, t_run, u, m.group(7))))
         if (vessel, n, u) in KEY_MIXING_POINTS:
-            figures += [(f, 'mixing_' + f) for f in m.group(10).split() if f.endswith('_label.png')]
+            # the labels at the end of the run (Figs 8-9 by colour)
+            last = [f for f in m.group(10).split() if f.endswith('_label.png')][-1:]
+            figures += [(f, 'mixing_' + f) for f in last]
     beds = sorted({f for f in os.listdir(case) if re.match(r'mixing_\w+_n\d+\.png$', f)})
     return rows, keys, [(f, f) for f in beds] + figures
 
