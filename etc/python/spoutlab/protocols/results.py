@@ -185,6 +185,11 @@ def noplates_section(case):
                       '2.0' if r.particles == 10000 else '', r.settings),
                      ('%s.dP_ms_kPa' % name, '%.4g' % (r.dp_ms / 1000), 'kPa',
                       '1.75' if r.particles == 10000 else '', r.settings)]
+    if r.u_ms is not None and r.rise is not None:
+        # the paper's words read from dP alone, beside the classifier's u_ms
+        rows.append(r.row('u_ms by dP alone (the step before its steepest rise)',
+                          '%.3f m/s, dP %.2f kPa' % (r.rise[0], r.rise[1] / 1000),
+                          '2.0 m/s, 1.75 kPa' if r.particles == 10000 else ''))
     if r.u_ms is None and r.rise is not None:
         # the paper's criterion read from dP alone, for a bed the classifier
         # does not call a spout: both said, side by side
