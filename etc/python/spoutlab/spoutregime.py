@@ -28,7 +28,7 @@ The bed spouts over a window of snapshots when
   open core    the column is dilute on average: at every height, the mean
                over the window of the layer's solid fraction is below
                DILUTE_RATIO = 0.5 of the annulus' (layers compared at the
-               same height relative to the surface);
+               same relative height between `bottom` and the surface);
   persistence  the flux is upward and there is a fountain in at least
                PERSISTENCE = 0.8 of the snapshots.
 
@@ -37,7 +37,7 @@ a spout carries slugs: the draft-plate paper finds slug flow in the spout
 at u_ms, and the beds here show a dense plug rising through an open channel
 at one write time in two (a snapshot's densest layer 0.5-1.1 of the
 annulus, the window's 0.2-0.5).  A bubbling bed has no channel: its voids
-pass through a core that is dense most of the time (window means 0.66-0.95
+pass through a core that is dense most of the time (window means 0.74-1.03
 in the 26 000-particle bed without plates).  A snapshot is still called
 open (`open_core`) when every layer is dilute at that instant, and spouting
 when it is also rising and has a fountain; the share of those is reported

@@ -290,23 +290,19 @@ def main(argv):
     shown = 0
     while True:
         steps, end = timeline(o, speeds)
-        if o['report']:
-            done = evaluate(o, steps, g)
-            nxt = plan.next([(s.u, s.branch, s.spouts) for s in done if s.branch != 'spinup'])
-            if len(done) < len(steps) or nxt is None:
-                break
-            speeds.append(nxt)
-            continue
-        extend(steps, end)
-        if (spoutedbed.last_time('log.spoutFoam') or 0.0) < end - 1e-3:  # the log rounds times
-            spoutedbed.run_spoutfoam(end, o['np'], 'minimumSpouting')
+        if not o['report']:
+            extend(steps, end)
+            if (spoutedbed.last_time('log.spoutFoam') or 0.0) < end - 1e-3:  # the log rounds
+                spoutedbed.run_spoutfoam(end, o['np'], 'minimumSpouting')
         done = evaluate(o, steps, g)
-        for k in range(shown, len(done)):
+        for k in range(shown, 0 if o['report'] else len(done)):
             s = done[k]
             print('minimumSpouting: step %d, u_s = %g m/s (%s): dP %.0f Pa, spout flux '
                   '%.3g m/s; the bed %s' % (k + 1, s.u, s.branch, s.dp, s.flux,
                                            s.verdict.describe()), flush=True)
         shown = len(done)
+        if o['report'] and len(done) < len(steps):   # --report: the run went no further
+            break
         nxt = plan.next([(s.u, s.branch, s.spouts) for s in done if s.branch != 'spinup'])
         if nxt is None:
             break
