@@ -55,6 +55,7 @@ FoamCellLocator::FoamCellLocator(const Foam::fvMesh& mesh)
     {
         for (const Foam::label n : list) neighbours_.push_back(n);
     }
+    buildLattice();
 }
 
 
@@ -115,6 +116,12 @@ label FoamCellLocator::towards(const Vec3& p, label cell) const
 
 label FoamCellLocator::findCell(const Vec3& p, label hint) const
 {
+    if (onLattice())
+    {
+        // on a face counts as inside, and the hint is tried first, as in
+        // the walk below
+        return hint >= 0 && inside(p, hint) ? hint : findOnLattice(p, hint);
+    }
     if (hint >= mesh_.nCells())
     {
         // an atom that strayed into a neighbour's cell, or its sample points
@@ -133,6 +140,14 @@ void FoamCellLocator::findCells
 ) const
 {
     cells.resize(units.size());
+    if
+    (
+        onLattice() && centre >= 0 && centre < nCells()
+     && findCellsOnLattice(x, radius, units, centre, cells)
+    )
+    {
+        return;
+    }
     constexpr std::size_t maxCut = 32;
     std::size_t cut[maxCut];
     std::size_t nCut = 0;
@@ -223,6 +238,161 @@ label FoamCellLocator::findOwned(const Vec3& p, label hint) const
     if (candidate < 0) return -1;
     const double tolerance = 1e-9*std::cbrt(mesh_.V()[candidate]);
     return depthInside(p, candidate) >= -tolerance ? candidate : -1;
+}
+
+
+void FoamCellLocator::buildLattice()
+{
+    lattice_ = Lattice();
+    const label n = nCells();
+    if (n == 0) return;
+
+    // each cell's bounds from its face planes; every plane must face along
+    // an axis (a box; split faces of one side give the same plane)
+    std::vector<double> lo(3*n, 1e300), hi(3*n, -1e300);
+    for (label c = 0; c < n; ++c)
+    {
+        for (std::size_t k = planeStart_[c]; k < planeStart_[c + 1]; ++k)
+        {
+            const double nk[3] = {planes_[k].nx, planes_[k].ny, planes_[k].nz};
+            int axis = -1;
+            for (int a = 0; a < 3; ++a)
+            {
+                if (std::abs(std::abs(nk[a]) - 1) < 1e-9) axis = a;
+                else if (std::abs(nk[a]) > 1e-9) return;
+            }
+            if (axis < 0) return;
+            if (nk[axis] > 0) hi[3*c + axis] = std::max(hi[3*c + axis], planes_[k].d);
+            else lo[3*c + axis] = std::min(lo[3*c + axis], -planes_[k].d);
+        }
+    }
+
+    // one spacing per axis, every box at a whole number of spacings from
+    // the lowest corner
+    Lattice L;
+    for (int a = 0; a < 3; ++a)
+    {
+        L.spacing[a] = hi[a] - lo[a];
+        L.origin[a] = 1e300;
+        double top = -1e300;
+        for (label c = 0; c < n; ++c)
+        {
+            if (std::abs(hi[3*c + a] - lo[3*c + a] - L.spacing[a]) > 1e-6*L.spacing[a]) return;
+            L.origin[a] = std::min(L.origin[a], lo[3*c + a]);
+            top = std::max(top, hi[3*c + a]);
+        }
+        L.n[a] = std::lround((top - L.origin[a])/L.spacing[a]);
+        L.inverse[a] = 1/L.spacing[a];
+    }
+    if (double(L.n[0])*double(L.n[1])*double(L.n[2]) > 64.0*double(n) + 1e4) return;
+    L.cell.assign(std::size_t(L.n[0]*L.n[1]*L.n[2]), -1);
+    L.box.resize(std::size_t(n));
+    for (label c = 0; c < n; ++c)
+    {
+        std::array<long, 3>& index = L.box[c];
+        for (int a = 0; a < 3; ++a)
+        {
+            const double t = (lo[3*c + a] - L.origin[a])/L.spacing[a];
+            index[a] = std::lround(t);
+            if (std::abs(t - double(index[a])) > 1e-6) return;
+        }
+        label& box = L.cell[std::size_t(index[0] + L.n[0]*(index[1] + L.n[1]*index[2]))];
+        if (box >= 0) return;   // two cells in one box: not a lattice
+        box = c;
+    }
+    lattice_ = std::move(L);
+}
+
+
+label FoamCellLocator::latticeCell(const Vec3& p) const
+{
+    const Lattice& L = lattice_;
+    const double x[3] = {p.x, p.y, p.z};
+    long index[3];
+    for (int a = 0; a < 3; ++a)
+    {
+        const double t = (x[a] - L.origin[a])/L.spacing[a];
+        if (t < -1e-9 || t > double(L.n[a]) + 1e-9) return -1;
+        index[a] = std::min(std::max(long(std::floor(t)), 0L), L.n[a] - 1);
+    }
+    return L.cell[std::size_t(index[0] + L.n[0]*(index[1] + L.n[1]*index[2]))];
+}
+
+
+label FoamCellLocator::findOnLattice(const Vec3& p, label hint) const
+{
+    const label cell = latticeCell(p);
+    if (cell >= 0 && inside(p, cell)) return cell;
+
+    // Within round-off of a box face the index and the face planes can
+    // disagree: the boxes around hold the point.
+    const Lattice& L = lattice_;
+    const double x[3] = {p.x, p.y, p.z};
+    bool nearFace = false;
+    for (int a = 0; a < 3; ++a)
+    {
+        const double t = (x[a] - L.origin[a])/L.spacing[a];
+        const double f = t - std::floor(t);
+        nearFace = nearFace || f < 1e-6 || f > 1 - 1e-6;
+    }
+    for (int dz = -1; nearFace && dz <= 1; ++dz)
+    {
+        for (int dy = -1; dy <= 1; ++dy)
+        {
+            for (int dx = -1; dx <= 1; ++dx)
+            {
+                const Vec3 q
+                {
+                    p.x + dx*1e-6*L.spacing[0], p.y + dy*1e-6*L.spacing[1],
+                    p.z + dz*1e-6*L.spacing[2]
+                };
+                const label c = latticeCell(q);
+                if (c >= 0 && inside(p, c)) return c;
+            }
+        }
+    }
+    // a point on the mesh boundary to within round-off: the hint (or the
+    // box's cell) if the point is that close to it, as findOwned
+    const label candidate = hint >= 0 ? hint : cell;
+    if (candidate < 0) return -1;
+    const double tolerance = 1e-9*std::cbrt(cellVolume(candidate));
+    return depthInside(p, candidate) >= -tolerance ? candidate : -1;
+}
+
+
+bool FoamCellLocator::findCellsOnLattice
+(
+    const Vec3& x, double radius, const std::vector<Vec3>& units,
+    label centre, std::vector<label>& cells
+) const
+{
+    // the centre in its box's coordinates (0 to 1), the radius in boxes
+    const Lattice& L = lattice_;
+    const std::array<long, 3>& box = L.box[centre];
+    const double xc[3] = {x.x, x.y, x.z};
+    double f[3], r[3];
+    for (int a = 0; a < 3; ++a)
+    {
+        f[a] = (xc[a] - L.origin[a])*L.inverse[a] - double(box[a]);
+        r[a] = radius*L.inverse[a];
+        if (r[a] >= 1) return false;
+    }
+    for (std::size_t i = 0; i < units.size(); ++i)
+    {
+        const double u[3] = {units[i].x, units[i].y, units[i].z};
+        long index[3];
+        bool outside = false;
+        for (int a = 0; a < 3; ++a)
+        {
+            // on a face counts as in the centre's box, as findCells' planes
+            const double t = f[a] + r[a]*u[a];
+            index[a] = box[a] + (t < 0 ? -1 : (t > 1 ? 1 : 0));
+            outside = outside || index[a] < 0 || index[a] >= L.n[a];
+        }
+        cells[i] = outside ? -1
+            : L.cell[std::size_t(index[0] + L.n[0]*(index[1] + L.n[1]*index[2]))];
+    }
+    return true;
 }
 
 
@@ -359,6 +529,7 @@ void FoamCellLocator::addHalo(const std::vector<double>& cuts, double reach)
             k += 8 + 4*nFaces;
         }
     }
+    buildLattice();
 }
 
 

@@ -168,6 +168,13 @@ TEST_F(FoamMesh, FindsTheCellOfRandomPointsWithAndWithoutHint)
 }
 
 
+TEST_F(FoamMesh, SlantedCellsAreNotALattice)
+{
+    // this mesh's cells are searched by the walk, not looked up
+    EXPECT_FALSE(spoutlab::FoamCellLocator(*mesh_).onLattice());
+}
+
+
 TEST_F(FoamMesh, PointsOnFacesBelongToAnAdjacentCell)
 {
     spoutlab::FoamCellLocator locator(*mesh_);
@@ -339,6 +346,92 @@ TEST_F(LShapedMesh, PointsInTheMissingSquareAreOutsideAndOthersInTheirCell)
         inHole += hole;
     }
     EXPECT_GT(inHole, 500);           // the hole was really probed
+}
+
+TEST_F(LShapedMesh, BoxesOfOneSpacingAreALattice)
+{
+    EXPECT_TRUE(spoutlab::FoamCellLocator(*mesh_).onLattice());
+}
+
+
+TEST_F(LShapedMesh, PointsOnFacesGoToTheHintOrAnAdjacentCell)
+{
+    const spoutlab::FoamCellLocator locator(*mesh_);
+    const Foam::volVectorField& C = mesh_->C();
+    // the cells either side of the face x = 0.25 in the first row
+    spoutlab::label left = -1, right = -1;
+    forAll(C, c)
+    {
+        if (std::abs(C[c].z() - 0.125) > 1e-9) continue;
+        if (std::abs(C[c].x() - 0.125) < 1e-9) left = c;
+        if (std::abs(C[c].x() - 0.375) < 1e-9) right = c;
+    }
+    ASSERT_GE(left, 0);
+    ASSERT_GE(right, 0);
+    const spoutlab::Vec3 onFace{0.25, 0.5, 0.1};
+    EXPECT_EQ(locator.findCell(onFace, left), left);
+    EXPECT_EQ(locator.findCell(onFace, right), right);
+    const spoutlab::label any = locator.findCell(onFace, -1);
+    EXPECT_TRUE(any == left || any == right) << any;
+
+    // on the outer boundary and on the missing square's faces: inside;
+    // a micrometre beyond them: outside
+    for (const spoutlab::Vec3& p :
+         {spoutlab::Vec3{0.0, 0.5, 0.5}, spoutlab::Vec3{2.0, 0.5, 0.5},
+          spoutlab::Vec3{0.5, 1.0, 0.5}, spoutlab::Vec3{1.5, 0.5, 1.0},
+          spoutlab::Vec3{1.0, 0.5, 1.5}})
+    {
+        const spoutlab::label cell = locator.findCell(p, -1);
+        ASSERT_GE(cell, 0) << p.x << ' ' << p.y << ' ' << p.z;
+        EXPECT_LE(std::abs(p.x - C[cell].x()), 0.125 + 1e-12);
+        EXPECT_LE(std::abs(p.z - C[cell].z()), 0.125 + 1e-12);
+        EXPECT_EQ(locator.findCell(p, cell), cell);
+    }
+    const double e = 1e-6;
+    for (const spoutlab::Vec3& p :
+         {spoutlab::Vec3{-e, 0.5, 0.5}, spoutlab::Vec3{2 + e, 0.5, 0.5},
+          spoutlab::Vec3{0.5, 1 + e, 0.5}, spoutlab::Vec3{1.5, 0.5, 1 + e},
+          spoutlab::Vec3{1 + e, 0.5, 1.5}})
+    {
+        EXPECT_EQ(locator.findCell(p, -1), -1) << p.x << ' ' << p.y << ' ' << p.z;
+        EXPECT_EQ(locator.findCell(p, 47), -1) << p.x << ' ' << p.y << ' ' << p.z;
+    }
+}
+
+TEST_F(LShapedMesh, SamplePointsOfASphereAreInFindCellsCells)
+{
+    // findCells looks a particle's sample points up from the centre's box;
+    // each answer must be findCell's with the centre's cell as hint, for
+    // spheres cut by faces, by the missing square and by the outer boundary
+    const spoutlab::FoamCellLocator locator(*mesh_);
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> u(0.0, 1.0), direction(-1.0, 1.0);
+    std::vector<spoutlab::Vec3> units;
+    while (units.size() < 40)
+    {
+        const spoutlab::Vec3 v{direction(rng), direction(rng), direction(rng)};
+        const double m = std::sqrt(v.x*v.x + v.y*v.y + v.z*v.z);
+        if (m > 0.1 && m <= 1) units.push_back(v*(u(rng)/m));
+    }
+    std::vector<spoutlab::label> cells;
+    int cut = 0;
+    for (int n = 0; n < 2000; ++n)
+    {
+        const spoutlab::Vec3 x{2*u(rng), u(rng), 2*u(rng)};
+        const spoutlab::label centre = locator.findCell(x, -1);
+        if (centre < 0) continue;
+        const double radius = 0.2*u(rng);
+        locator.findCells(x, radius, units, centre, cells);
+        ASSERT_EQ(cells.size(), units.size());
+        for (std::size_t k = 0; k < units.size(); ++k)
+        {
+            const spoutlab::Vec3 p = x + units[k]*radius;
+            EXPECT_EQ(cells[k], locator.findCell(p, centre))
+                << p.x << ' ' << p.y << ' ' << p.z;
+            cut += cells[k] != centre;
+        }
+    }
+    EXPECT_GT(cut, 5000);   // many sample points left the centre's cell
 }
 
 } // namespace
