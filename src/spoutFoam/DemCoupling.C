@@ -832,6 +832,10 @@ void DemCoupling::writeParticles()
 void DemCoupling::finish()
 {
     if (log_) log_->flush();
+    // how often LIGGGHTS rebuilt its neighbour lists (bench/neighbourSettings):
+    // a rebuild costs several plain DEM steps
+    Foam::Info<< "LIGGGHTS: " << dem_->neighbourBuilds() << " neighbour list builds in "
+        << dem_->step() << " DEM steps (skin " << dem_->skin() << " m)" << Foam::endl;
     if (!Foam::Pstream::parRun()) return;
     // what the neighbour exchange cost, per rank and step (benchmarks)
     const Foam::label nProcs = Foam::Pstream::nProcs();

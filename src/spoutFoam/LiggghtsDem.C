@@ -232,7 +232,11 @@ void LiggghtsDem::run(int nSteps)
 {
     Activity doing("running " + std::to_string(nSteps) + " DEM steps");
     const std::string cmd = "run " + std::to_string(nSteps) + " pre no post no";
+    // LIGGGHTS zeroes its count at every set-up and restart write: count
+    // the builds of each run here
+    const long before = long(lmp_->neighbor->ncalls);
     lmp_->input->one(cmd.c_str());
+    neighbourBuilds_ += long(lmp_->neighbor->ncalls) - before;
     stepsRun_ += nSteps;
 }
 
@@ -244,6 +248,18 @@ void LiggghtsDem::setup()
     // so it runs before they are set: a 'run N' with set-up would start its
     // N steps with no fluid force and no heat flux.
     lmp_->input->one("run 0 post no");
+}
+
+
+long LiggghtsDem::neighbourBuilds() const
+{
+    return neighbourBuilds_;
+}
+
+
+double LiggghtsDem::skin() const
+{
+    return lmp_->neighbor->skin;
 }
 
 
