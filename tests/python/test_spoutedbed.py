@@ -128,6 +128,21 @@ class ErgunMinimumFluidisation(unittest.TestCase):
         self.assertTrue(u[0] < u[1] < u[2])
 
 
+class InsertionSeed(unittest.TestCase):
+    """LIGGGHTS takes only primes above 10 000 as seeds."""
+
+    def test_primes_above_ten_thousand_are_taken(self):
+        for seed in (10007, 15485867, 49979687):
+            self.assertEqual(spoutedbed.insertion_seed(str(seed), 'dict'), seed)
+
+    def test_others_stop_naming_the_key(self):
+        for text in ('49979685', '10001', '9973', '1e5', 'seven'):   # 5 x, 73 x 137, < 10 000
+            with self.assertRaises(SystemExit) as stop:
+                spoutedbed.insertion_seed(text, 'system/spoutedBedDict')
+            self.assertIn("system/spoutedBedDict: key 'insertionSeed' expected a prime",
+                          str(stop.exception.code))
+
+
 class VesselVolume(unittest.TestCase):
     """The vessel below a height, for the settled bed's voidage: the slanted
     part is a trapezoid, the rest a rectangle, less the plates."""

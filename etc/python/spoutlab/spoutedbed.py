@@ -21,6 +21,18 @@ def read_dict(path, overrides):
     return values
 
 
+def insertion_seed(text, path):
+    """LIGGGHTS' insertion seed: it must be a prime above 10 000."""
+    try:
+        seed = int(text)
+    except ValueError:
+        seed = 0
+    if seed <= 10000 or any(seed % k == 0 for k in range(2, math.isqrt(seed) + 1)):
+        sys.exit('generate: %s: key \'insertionSeed\' expected a prime number above '
+                 '10000 (LIGGGHTS\' rule), got %r' % (path, text))
+    return seed
+
+
 class Geometry:
     """The vessel in mm, from the dictionary."""
 
@@ -47,6 +59,7 @@ class Geometry:
         self.dz = number('cellHeight') / self.refine
         self.particles = {k: number(k) for k in
                           ('nParticles', 'dp', 'rhop', 'kn', 'e', 'mu', 'nu', 'dtDem')}
+        self.seed = insertion_seed(d.get('insertionSeed', '49979687'), path)
         self.tan = math.tan(math.radians(self.theta))
         self.nx = round(self.W / self.dx)
         self.nz = round(self.H / self.dz)
