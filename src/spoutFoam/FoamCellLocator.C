@@ -366,31 +366,50 @@ bool FoamCellLocator::findCellsOnLattice
     label centre, std::vector<label>& cells
 ) const
 {
-    // the centre in its box's coordinates (0 to 1), the radius in boxes
+    // the centre in its box's coordinates (0 to 1), the radius in boxes;
+    // only the axes along which the sphere reaches a face of the box can
+    // move a piece out of it (usually one or two of the three)
     const Lattice& L = lattice_;
     const std::array<long, 3>& box = L.box[centre];
     const double xc[3] = {x.x, x.y, x.z};
-    double f[3], r[3];
+    const long stride[3] = {1, L.n[0], L.n[0]*L.n[1]};
+    struct Cut { int axis; double f, r; bool below, above; };
+    Cut cut[3];
+    int nCut = 0;
     for (int a = 0; a < 3; ++a)
     {
-        f[a] = (xc[a] - L.origin[a])*L.inverse[a] - double(box[a]);
-        r[a] = radius*L.inverse[a];
-        if (r[a] >= 1) return false;
+        const double f = (xc[a] - L.origin[a])*L.inverse[a] - double(box[a]);
+        const double r = radius*L.inverse[a];
+        if (r >= 1) return false;
+        if (f - r < 0 || f + r > 1)
+        {
+            // whether the boxes below and above exist in the lattice
+            cut[nCut++] = Cut{a, f, r, box[a] > 0, box[a] < L.n[a] - 1};
+        }
     }
+    const long home = box[0] + L.n[0]*(box[1] + L.n[1]*box[2]);
     for (std::size_t i = 0; i < units.size(); ++i)
     {
         const double u[3] = {units[i].x, units[i].y, units[i].z};
-        long index[3];
+        long index = home;
         bool outside = false;
-        for (int a = 0; a < 3; ++a)
+        for (int j = 0; j < nCut; ++j)
         {
             // on a face counts as in the centre's box, as findCells' planes
-            const double t = f[a] + r[a]*u[a];
-            index[a] = box[a] + (t < 0 ? -1 : (t > 1 ? 1 : 0));
-            outside = outside || index[a] < 0 || index[a] >= L.n[a];
+            const Cut& c = cut[j];
+            const double t = c.f + c.r*u[c.axis];
+            if (t < 0)
+            {
+                outside = outside || !c.below;
+                index -= stride[c.axis];
+            }
+            else if (t > 1)
+            {
+                outside = outside || !c.above;
+                index += stride[c.axis];
+            }
         }
-        cells[i] = outside ? -1
-            : L.cell[std::size_t(index[0] + L.n[0]*(index[1] + L.n[1]*index[2]))];
+        cells[i] = outside ? -1 : L.cell[std::size_t(index)];
     }
     return true;
 }
