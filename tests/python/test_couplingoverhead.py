@@ -1,0 +1,124 @@
+"""bench/couplingOverhead's bookkeeping, without running anything: the rank
+counts it accepts, what it reads from a LIGGGHTS log of a parallel run, the
+side-by-side figures of serial and 2-rank runs (ratios and speed-ups worked
+out here by hand from made-up times) and when it warns that other programs
+spoilt a run. The benchmark's figures themselves are not tested."""
+import importlib.machinery
+import importlib.util
+import os
+import tempfile
+import unittest
+
+REPOSITORY = os.path.abspath(os.environ.get('SPOUTLAB_DIR', '../..'))
+
+
+def load_bench():
+    path = os.path.join(REPOSITORY, 'bench', 'couplingOverhead')
+    loader = importlib.machinery.SourceFileLoader('couplingOverhead', path)
+    spec = importlib.util.spec_from_loader('couplingOverhead', loader)
+    module = importlib.util.module_from_spec(spec)
+    loader.exec_module(module)
+    return module
+
+
+co = load_bench()
+
+
+def runs(coupled_loop, inside, alone_loop, coupled_wall, alone_wall, others=0.0):
+    """One rank count's three runs, as the benchmark keeps them."""
+    return {'alone': {'loop': alone_loop, 'wall': alone_wall, 'others': others},
+            'chunked': {'loop': alone_loop, 'wall': alone_wall + 0.1, 'others': 0.0},
+            'coupled': {'loop_wall': coupled_loop, 'loop': inside,
+                        'wall': coupled_wall, 'others': 0.0}}
+
+
+# made-up times [s]: serial, then 2 ranks
+SERIAL = runs(20.0, 8.0, 5.0, 22.0, 6.0)
+TWO = runs(12.5, 4.0, 3.2, 14.0, 4.0)
+
+
+class RankCounts(unittest.TestCase):
+    def test_default_is_serial(self):
+        self.assertEqual(co.options([]).np, [1])
+
+    def test_a_list_of_rank_counts(self):
+        self.assertEqual(co.options(['--np', '1', '2']).np, [1, 2])
+
+    def test_refusals_name_the_option(self):
+        for bad in (['0'], ['1', '1'], ['2', '-1']):
+            with self.subTest(np=bad):
+                with self.assertRaisesRegex(co.BenchError, r'^--np '):
+                    co.options(['--np'] + bad)
+
+    def test_launcher(self):
+        self.assertEqual(co.launcher(1), [])
+        self.assertEqual(co.launcher(2, cores=2), ['mpirun', '-np', '2'])
+        self.assertEqual(co.launcher(4, cores=2), ['mpirun', '-np', '4', '--oversubscribe'])
+
+
+class ParallelLog(unittest.TestCase):
+    """Rank 0 prints one 'Loop time' line per run, the loop's wall time."""
+
+    def test_loop_times_and_ranks(self):
+        text = ('Step Time Atoms KinEng rke vrms zmax CPU\n'
+                '0 0 3000 0.1 0.01 0.02 0.3 0\n'
+                'Loop time of 0.25 on 2 procs for 5 steps with 3000 atoms\n'
+                'Loop time of 0.5 on 2 procs for 5 steps with 3000 atoms\n')
+        with tempfile.NamedTemporaryFile('w', suffix='.log') as f:
+            f.write(text)
+            f.flush()
+            log = co.read_liggghts_log(f.name)
+        self.assertEqual((log['loop'], log['steps'], log['runs']), (0.75, 10, 2))
+        self.assertEqual((log['procs'], log['atoms']), (2, 3000))
+        self.assertEqual(log['rows'][0]['zmax'], 0.3)
+
+
+class SideBySide(unittest.TestCase):
+    def test_ratios_on_each_rank_count(self):
+        one, two = co.rank_figures(SERIAL), co.rank_figures(TWO)
+        self.assertAlmostEqual(one['per_alone'], 4.0)
+        self.assertAlmostEqual(one['per_inside'], 2.5)
+        self.assertAlmostEqual(one['per_alone_process'], 22.0 / 6.0)
+        self.assertAlmostEqual(two['per_alone'], 3.90625)
+        self.assertAlmostEqual(two['per_inside'], 3.125)
+        self.assertAlmostEqual(two['per_alone_process'], 3.5)
+
+    def test_speed_ups_are_serial_over_parallel(self):
+        up = co.speed_ups({1: co.rank_figures(SERIAL), 2: co.rank_figures(TWO)})
+        self.assertAlmostEqual(up[2]['coupled'], 1.6)
+        self.assertAlmostEqual(up[2]['inside'], 2.0)
+        self.assertAlmostEqual(up[2]['alone'], 1.5625)
+        self.assertAlmostEqual(up[1]['coupled'], 1.0)
+
+    def test_no_speed_up_without_a_serial_run(self):
+        self.assertIsNone(co.speed_ups({2: co.rank_figures(TWO)}))
+        text = co.side_by_side({2: TWO}, cores=2)
+        self.assertIn('--np 1', text)
+
+    def test_block_shows_both_rank_counts(self):
+        text = co.side_by_side({1: SERIAL, 2: TWO}, cores=2)
+        self.assertRegex(text, r'coupled / DEM inside coupled\s+2\.50\s+3\.12')
+        self.assertRegex(text, r'coupled time loop\s+1\.00\s+1\.60')
+
+
+class OtherLoad(unittest.TestCase):
+    """Waiting MPI ranks poll: on 2 cores a 2-rank run shares with anything."""
+
+    def test_two_ranks_on_two_cores(self):
+        self.assertTrue(co.load_note(2, 0.2, cores=2))
+        self.assertFalse(co.load_note(2, 0.1, cores=2))
+        self.assertIn('meaningless', ' '.join(co.load_note(2, 0.2, cores=2)))
+
+    def test_serial_needs_one_free_core(self):
+        self.assertFalse(co.load_note(1, 1.0, cores=2))
+        self.assertTrue(co.load_note(1, 1.3, cores=2))
+
+    def test_block_warns_for_the_spoilt_run_only(self):
+        busy = runs(12.5, 4.0, 3.2, 14.0, 4.0, others=0.3)
+        text = co.side_by_side({1: SERIAL, 2: busy}, cores=2)
+        self.assertIn('meaningless', text)
+        self.assertNotIn('meaningless', co.side_by_side({1: SERIAL, 2: TWO}, cores=2))
+
+
+if __name__ == '__main__':
+    unittest.main()
