@@ -109,6 +109,9 @@ class OtherLoad(unittest.TestCase):
         self.assertFalse(co.load_note(2, 0.1, cores=2))
         self.assertIn('meaningless', ' '.join(co.load_note(2, 0.2, cores=2)))
 
+    def test_more_ranks_than_cores(self):
+        self.assertIn('oversubscribed', ' '.join(co.load_note(4, 0.0, cores=2)))
+
     def test_serial_needs_one_free_core(self):
         self.assertFalse(co.load_note(1, 1.0, cores=2))
         self.assertTrue(co.load_note(1, 1.3, cores=2))
