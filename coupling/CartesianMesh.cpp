@@ -112,4 +112,21 @@ bool CartesianMesh::sphereInsideCell(label cell, const Vec3& c, double r) const
            && c.z + r <= hi.z;
 }
 
+// Inside a cell: the distance to its nearest face (a point on a face has
+// none: the half-open intervals give it to the + side). Outside the box: the
+// largest distance beyond it along one axis, which keeps it outside.
+double CartesianMesh::clearance(const Vec3& p, label cell) const
+{
+    const Vec3 lo{xf_.front(), yf_.front(), zf_.front()};
+    const Vec3 hi{xf_.back(), yf_.back(), zf_.back()};
+    if (cell < 0)
+    {
+        const double beyond[3] = {std::max(lo.x - p.x, p.x - hi.x), std::max(lo.y - p.y, p.y - hi.y),
+                                  std::max(lo.z - p.z, p.z - hi.z)};
+        return std::max(0.0, std::max(beyond[0], std::max(beyond[1], beyond[2])));
+    }
+    const Vec3 a = cellLower(cell), b = cellUpper(cell);
+    return std::max(0.0, std::min({p.x - a.x, b.x - p.x, p.y - a.y, b.y - p.y, p.z - a.z, b.z - p.z}));
+}
+
 } // namespace spoutlab

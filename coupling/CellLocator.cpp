@@ -15,6 +15,11 @@ void CellLocator::findCells(const Vec3& centre, double radius, const std::vector
     }
 }
 
+double CellLocator::clearance(const Vec3&, label) const
+{
+    return 0.0;
+}
+
 void CellLocator::complete(std::vector<double>&, int) const {}
 
 void completeVectors(const CellLocator& mesh, std::vector<Vec3>& values)

@@ -37,6 +37,12 @@ public:
     virtual void findCells(const Vec3& centre, double radius, const std::vector<Vec3>& units,
                            label centreCell, std::vector<label>& cells) const;
 
+    // How far p may move, in any direction, before findCell with cell as
+    // hint could answer other than cell, findCell's answer for p (-1, outside
+    // the mesh, included). Lets a particle keep last step's cells while it has
+    // moved less; 0, the default, is always allowed and means "look again".
+    virtual double clearance(const Vec3& p, label cell) const;
+
     // Parallel runs. The cells of neighbouring ranks that this rank's
     // particles reach (halo cells) are numbered after its own, and nCells()
     // counts both; findCell() and cellVolume() know them. complete() takes a

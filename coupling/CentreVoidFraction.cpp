@@ -8,10 +8,11 @@ const Registration<VoidFractionModel, CentreVoidFraction> registeredCentreVoidFr
 
 CentreVoidFraction::CentreVoidFraction(const Parameters& props) : VoidFractionModel(props) {}
 
-void CentreVoidFraction::distribute(const CellLocator&, const Particle&, label centreCell,
-                                    std::vector<CellWeight>& row) const
+double CentreVoidFraction::distribute(const CellLocator& mesh, const Particle& p, label centreCell,
+                                      std::vector<CellWeight>& row) const
 {
     row.push_back({centreCell, 1.0});
+    return mesh.clearance(p.x, centreCell); // the row lasts while the centre stays in its cell
 }
 
 } // namespace spoutlab

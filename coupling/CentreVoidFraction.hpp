@@ -15,8 +15,8 @@ public:
     std::string name() const override { return "centre"; }
 
 protected:
-    void distribute(const CellLocator& mesh, const Particle& p, label centreCell,
-                    std::vector<CellWeight>& row) const override;
+    double distribute(const CellLocator& mesh, const Particle& p, label centreCell,
+                      std::vector<CellWeight>& row) const override;
 };
 
 } // namespace spoutlab

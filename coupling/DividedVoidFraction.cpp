@@ -2,6 +2,7 @@
 
 #include "SphereSampling.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace spoutlab
@@ -52,19 +53,27 @@ DividedVoidFraction::DividedVoidFraction(const Parameters& props) : VoidFraction
     }
 }
 
-void DividedVoidFraction::distribute(const CellLocator& mesh, const Particle& p, label centreCell,
-                                     std::vector<CellWeight>& row) const
+double DividedVoidFraction::distribute(const CellLocator& mesh, const Particle& p, label centreCell,
+                                       std::vector<CellWeight>& row) const
 {
+    // The row lasts while the centre stays in its cell and every piece in
+    // the cell it is in now (outside the mesh included): the smallest of
+    // their clearances.
+    double clearance = mesh.clearance(p.x, centreCell);
     if (mesh.sphereInsideCell(centreCell, p.x, p.radius))
     {
         row.push_back({centreCell, 1.0});
-        return;
+        return std::max(0.0, clearance - p.radius); // and the sphere inside it
     }
     // Count pieces per cell first and divide once, so the weights are exact
     // ratios count/N whose sum is 1 to round-off. A particle touches few cells,
     // so a linear search of row is the fastest lookup.
     thread_local std::vector<label> cells; // reused: one call per particle and step
     mesh.findCells(p.x, p.radius, samples_, centreCell, cells);
+    for (std::size_t k = 0; k < cells.size() && clearance > 0; ++k)
+    {
+        clearance = std::min(clearance, mesh.clearance(p.x + samples_[k] * p.radius, cells[k]));
+    }
     for (label cell : cells)
     {
         if (cell < 0) cell = centreCell;
@@ -81,6 +90,7 @@ void DividedVoidFraction::distribute(const CellLocator& mesh, const Particle& p,
     }
     const double n = static_cast<double>(samples_.size());
     for (CellWeight& cw : row) cw.weight /= n;
+    return clearance;
 }
 
 } // namespace spoutlab

@@ -34,8 +34,8 @@ public:
     const std::vector<Vec3>& unitSamplePoints() const { return samples_; }
 
 protected:
-    void distribute(const CellLocator& mesh, const Particle& p, label centreCell,
-                    std::vector<CellWeight>& row) const override;
+    double distribute(const CellLocator& mesh, const Particle& p, label centreCell,
+                      std::vector<CellWeight>& row) const override;
 
 private:
     std::vector<Vec3> samples_;

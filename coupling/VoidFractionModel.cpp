@@ -55,24 +55,66 @@ std::vector<double> VoidFractionModel::voidFraction(const CellLocator& mesh,
 VoidFractionResult VoidFractionModel::compute(const CellLocator& mesh, const std::vector<Particle>& particles,
                                               const std::vector<label>& centreHints) const
 {
+    return map(mesh, particles, centreHints, nullptr);
+}
+
+VoidFractionResult VoidFractionModel::compute(const CellLocator& mesh, const std::vector<Particle>& particles,
+                                              const VoidFractionResult& previous) const
+{
+    return map(mesh, particles, previous.centreCell, &previous);
+}
+
+namespace
+{
+
+// Whether the particle may keep the row made at origin: the same particle,
+// the same size, moved less than the clearance (less a margin far above the
+// round-off of positions, so that no piece can have reached a face).
+bool rowLasts(const RowOrigin& origin, const Particle& p)
+{
+    const double margin = 1e-9 * p.radius;
+    return origin.id == p.id && origin.radius == p.radius && origin.clearance > margin
+        && mag(p.x - origin.x) < origin.clearance - margin;
+}
+
+} // namespace
+
+VoidFractionResult VoidFractionModel::map(const CellLocator& mesh, const std::vector<Particle>& particles,
+                                          const std::vector<label>& centreHints,
+                                          const VoidFractionResult* previous) const
+{
     const bool hinted = centreHints.size() == particles.size();
+    const bool kept = previous && previous->origin.size() == particles.size()
+                   && previous->map.nParticles() == particles.size();
     VoidFractionResult result;
     result.solidVolume.assign(static_cast<std::size_t>(mesh.nCells()), 0.0);
     result.centreCell.resize(particles.size());
+    result.origin.resize(particles.size());
     std::vector<CellWeight> row;
     for (std::size_t n = 0; n < particles.size(); ++n)
     {
         const Particle& p = particles[n];
-        const label centre = mesh.findCell(p.x, hinted ? centreHints[n] : -1);
-        result.centreCell[n] = centre;
         row.clear();
-        if (centre < 0)
+        if (kept && rowLasts(previous->origin[n], p))
         {
-            result.lostParticles.push_back(n);
+            const ParticleCellMap::Row last = previous->map.cells(n);
+            row.assign(last.begin(), last.end());
+            result.centreCell[n] = previous->centreCell[n];
+            result.origin[n] = previous->origin[n];
+            ++result.rowsKept;
         }
         else
         {
-            distribute(mesh, p, centre, row);
+            const label centre = mesh.findCell(p.x, hinted ? centreHints[n] : -1);
+            result.centreCell[n] = centre;
+            if (centre < 0)
+            {
+                result.lostParticles.push_back(n);
+            }
+            else
+            {
+                result.origin[n] = RowOrigin{p.id, p.x, p.radius, distribute(mesh, p, centre, row)};
+            }
         }
         const double volume = p.volume();
         for (const CellWeight& cw : row) result.solidVolume[cw.cell] += cw.weight * volume;

@@ -52,12 +52,24 @@ private:
     std::vector<CellWeight> entries_;
 };
 
+// Where a particle's row was made and how far it may move from there before
+// any of its cells could change (the model's promise; 0: none).
+struct RowOrigin
+{
+    long id = -1;
+    Vec3 x;
+    double radius = 0.0;
+    double clearance = 0.0;
+};
+
 struct VoidFractionResult
 {
     ParticleCellMap map;
     std::vector<double> solidVolume;        // per cell [m^3]
     std::vector<label> centreCell;          // per particle, -1 if its centre is outside the mesh
     std::vector<std::size_t> lostParticles; // indices (into the particle vector) with centreCell -1
+    std::vector<RowOrigin> origin;          // per particle
+    std::size_t rowsKept = 0;               // rows taken over from the previous mapping
 };
 
 // eps = 1 - solidVolume/V per cell, bounded below by voidFractionMin. The bound
@@ -80,6 +92,13 @@ public:
     // so a hint saves the octree search.
     VoidFractionResult compute(const CellLocator& mesh, const std::vector<Particle>& particles,
                                const std::vector<label>& centreHints = {}) const;
+    // The same, taking over from previous (last step's mapping of the same
+    // particles, in the same order) the row of each particle that has moved
+    // less than its row's clearance since the row was made: its pieces are
+    // all still in the same cells, so the row is the one distribute() would
+    // make, to the bit. Most particles of a bed are slow: their rows last.
+    VoidFractionResult compute(const CellLocator& mesh, const std::vector<Particle>& particles,
+                               const VoidFractionResult& previous) const;
 
     double voidFractionMin() const { return voidFractionMin_; }
     std::vector<double> voidFraction(const CellLocator& mesh, const std::vector<double>& solidVolume) const;
@@ -93,11 +112,17 @@ public:
 protected:
     // Fill row with this particle's (cell, weight) pairs, weights summing to 1.
     // Called only for particles whose centre lies in centreCell (>= 0).
-    virtual void distribute(const CellLocator& mesh, const Particle& p, label centreCell,
-                            std::vector<CellWeight>& row) const = 0;
+    // Returns how far the particle may move before the row could change
+    // (CellLocator::clearance of what the row depends on); 0: no promise.
+    virtual double distribute(const CellLocator& mesh, const Particle& p, label centreCell,
+                              std::vector<CellWeight>& row) const = 0;
 
 private:
     double voidFractionMin_;
+
+    VoidFractionResult map(const CellLocator& mesh, const std::vector<Particle>& particles,
+                           const std::vector<label>& centreHints,
+                           const VoidFractionResult* previous) const;
 };
 
 } // namespace spoutlab

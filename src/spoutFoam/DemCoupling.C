@@ -452,7 +452,7 @@ VoidFractionResult DemCoupling::mapParticles()
     }
     stopIfAnyRank(found);
     VoidFractionResult vf =
-        voidFractionModel_->compute(locator_, particles_, centreCells_);
+        voidFractionModel_->compute(locator_, particles_, mapping_);
 
     // A rank's atoms lie in its cells or its halo; a centre in neither is
     // outside the mesh.
@@ -484,7 +484,9 @@ VoidFractionResult DemCoupling::mapParticles()
         vf = voidFractionModel_->compute(locator_, particles_);
     }
 
-    centreCells_ = vf.centreCell;   // hints for the next step
+    mapping_ = vf;   // hints and lasting rows for the next step
+    rowsKept_ += double(vf.rowsKept);
+    rowsMapped_ += double(particles_.size());
     eps_ = voidFractionModel_->voidFraction(locator_, vf.solidVolume);
     Foam::scalarField& field = voidfraction_.primitiveFieldRef();
     forAll(field, celli) field[celli] = eps_[celli];
@@ -836,6 +838,10 @@ void DemCoupling::finish()
     // a rebuild costs several plain DEM steps
     Foam::Info<< "LIGGGHTS: " << dem_->neighbourBuilds() << " neighbour list builds in "
         << dem_->step() << " DEM steps (skin " << dem_->skin() << " m)" << Foam::endl;
+    double rows[2] = {rowsKept_, rowsMapped_};
+    sumOverRanks(rows, 2);
+    Foam::Info<< "Void fraction: " << 100*rows[0]/std::max(rows[1], 1.0)
+        << " % of the particles kept the last step's cells" << Foam::endl;
     if (!Foam::Pstream::parRun()) return;
     // what the neighbour exchange cost, per rank and step (benchmarks)
     const Foam::label nProcs = Foam::Pstream::nProcs();

@@ -434,4 +434,32 @@ TEST_F(LShapedMesh, SamplePointsOfASphereAreInFindCellsCells)
     EXPECT_GT(cut, 5000);   // many sample points left the centre's cell
 }
 
+TEST_F(LShapedMesh, APointMovedLessThanItsClearanceKeepsItsCell)
+{
+    // in a cell, in the missing square and outside the mesh: moved less
+    // than the clearance in any direction, findCell (hint: its cell) gives
+    // the same answer -- what lets a particle keep last step's cells
+    const spoutlab::FoamCellLocator locator(*mesh_);
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> u(-0.05, 1.05), d(-1.0, 1.0);
+    int moved = 0, outside = 0;
+    for (int n = 0; n < 3000; ++n)
+    {
+        const spoutlab::Vec3 p{2*u(rng), u(rng), 2*u(rng)};
+        const spoutlab::label cell = locator.findCell(p, -1);
+        const double c = locator.clearance(p, cell);
+        EXPECT_LE(c, 0.125 + 1e-12);
+        outside += cell < 0 && c > 0;
+        for (int k = 0; k < 10 && c > 0; ++k, ++moved)
+        {
+            spoutlab::Vec3 dir{d(rng), d(rng), d(rng)};
+            dir = dir/spoutlab::mag(dir);
+            const spoutlab::Vec3 q = p + dir*(0.999*c);
+            EXPECT_EQ(locator.findCell(q, cell), cell) << q.x << ' ' << q.y << ' ' << q.z;
+        }
+    }
+    EXPECT_GT(moved, 25000);
+    EXPECT_GT(outside, 300);   // the hole and the outside were probed too
+}
+
 } // namespace

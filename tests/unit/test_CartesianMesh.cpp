@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <limits>
+#include <random>
 
 using namespace spoutlab;
 
@@ -101,4 +102,37 @@ TEST(CartesianMesh, RejectsUnsortedOrShortFaceLists)
     EXPECT_THROW(CartesianMesh({0.0, 2.0, 1.0}, {0.0, 1.0}, {0.0, 1.0}), InputError);
     EXPECT_THROW(CartesianMesh({0.0}, {0.0, 1.0}, {0.0, 1.0}), InputError);
     EXPECT_THROW(CartesianMesh::uniform({0, 0, 0}, {1, 1, 1}, 0, 1, 1), InputError);
+}
+
+TEST(CartesianMesh, ClearanceIsTheDistanceToTheNearestFace)
+{
+    // 11 mm x 10 mm x 19 mm cells; (5, 13, 100) mm is 3 mm from its cell's
+    // nearest face (y = 10 mm), 5 from x = 0 and from z = 95 mm
+    const CartesianMesh mesh = CartesianMesh::uniform({0, 0, 0}, {0.099, 0.04, 0.19}, 9, 4, 10);
+    const Vec3 p{0.005, 0.013, 0.1};
+    EXPECT_NEAR(mesh.clearance(p, mesh.findCell(p, -1)), 0.003, 1e-15);
+    // on a face (to round-off): none; outside: the distance beyond the box along one axis
+    EXPECT_LT(mesh.clearance({0.022, 0.013, 0.1}, mesh.findCell({0.022, 0.013, 0.1}, -1)), 1e-15);
+    EXPECT_NEAR(mesh.clearance({0.05, 0.02, 0.2}, -1), 0.01, 1e-15);
+}
+
+TEST(CartesianMesh, APointMovedLessThanItsClearanceStaysInItsCell)
+{
+    const CartesianMesh mesh = CartesianMesh::uniform({0, 0, 0}, {0.099, 0.04, 0.19}, 9, 4, 10);
+    std::mt19937 gen(5);
+    std::uniform_real_distribution<double> u(-0.02, 1.02), d(-1.0, 1.0);
+    int moved = 0;
+    for (int n = 0; n < 2000; ++n)
+    {
+        const Vec3 p{0.099 * u(gen), 0.04 * u(gen), 0.19 * u(gen)};
+        const label cell = mesh.findCell(p, -1);
+        const double c = mesh.clearance(p, cell);
+        for (int k = 0; k < 10 && c > 0; ++k, ++moved)
+        {
+            Vec3 dir{d(gen), d(gen), d(gen)};
+            dir = dir / mag(dir);
+            EXPECT_EQ(mesh.findCell(p + dir * (0.999 * c), cell), cell);
+        }
+    }
+    EXPECT_GT(moved, 15000);
 }
