@@ -74,7 +74,7 @@ bool rowLasts(const RowOrigin& origin, const Particle& p)
 {
     const double margin = 1e-9 * p.radius;
     return origin.id == p.id && origin.radius == p.radius && origin.clearance > margin
-        && mag(p.x - origin.x) < origin.clearance - margin;
+           && mag(p.x - origin.x) < origin.clearance - margin;
 }
 
 } // namespace
@@ -85,7 +85,7 @@ VoidFractionResult VoidFractionModel::map(const CellLocator& mesh, const std::ve
 {
     const bool hinted = centreHints.size() == particles.size();
     const bool kept = previous && previous->origin.size() == particles.size()
-                   && previous->map.nParticles() == particles.size();
+                      && previous->map.nParticles() == particles.size();
     VoidFractionResult result;
     result.solidVolume.assign(static_cast<std::size_t>(mesh.nCells()), 0.0);
     result.centreCell.resize(particles.size());

@@ -121,8 +121,7 @@ private:
     double voidFractionMin_;
 
     VoidFractionResult map(const CellLocator& mesh, const std::vector<Particle>& particles,
-                           const std::vector<label>& centreHints,
-                           const VoidFractionResult* previous) const;
+                           const std::vector<label>& centreHints, const VoidFractionResult* previous) const;
 };
 
 } // namespace spoutlab
