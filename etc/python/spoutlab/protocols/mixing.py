@@ -180,7 +180,7 @@ def report(a):
                        '"%s" skip 1 using 1:3 with lines dt 2 title "%g m/s, Lacey"'
                        % (data, r.u)]
         sc.plot('mixing_%s_n%d.png' % (vessel.replace('-', ''), n),
-                'set datafile separator ","\nset grid\nset key bottom right\n'
+                'set datafile separator ","\nset grid\nset key top left\n'
                 'set title "Degree of mixing, %s, %d particles (left-right halves)"\n'
                 'set xlabel "time [s]"\nset ylabel "M"\nset yrange [-0.1:1.1]\nplot %s\n'
                 % ('no draft plates' if vessel == 'no-plates' else 'draft plates', n,
