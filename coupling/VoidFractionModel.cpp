@@ -61,7 +61,7 @@ VoidFractionResult VoidFractionModel::compute(const CellLocator& mesh, const std
 VoidFractionResult VoidFractionModel::compute(const CellLocator& mesh, const std::vector<Particle>& particles,
                                               const VoidFractionResult& previous) const
 {
-    return map(mesh, particles, previous.centreCell, &previous);
+    return map(mesh, particles, {}, &previous);
 }
 
 namespace
@@ -84,8 +84,11 @@ VoidFractionResult VoidFractionModel::map(const CellLocator& mesh, const std::ve
                                           const VoidFractionResult* previous) const
 {
     const bool hinted = centreHints.size() == particles.size();
-    const bool kept = previous && previous->origin.size() == particles.size()
-                      && previous->map.nParticles() == particles.size();
+    // previous's particles are walked beside these by id (both in increasing
+    // id order, as LiggghtsDem gives them): atoms that moved to or from
+    // another rank shift the slots, not the match
+    const std::size_t nLast = previous ? std::min(previous->origin.size(), previous->map.nParticles()) : 0;
+    std::size_t m = 0;
     VoidFractionResult result;
     result.solidVolume.assign(static_cast<std::size_t>(mesh.nCells()), 0.0);
     result.centreCell.resize(particles.size());
@@ -94,26 +97,30 @@ VoidFractionResult VoidFractionModel::map(const CellLocator& mesh, const std::ve
     for (std::size_t n = 0; n < particles.size(); ++n)
     {
         const Particle& p = particles[n];
+        while (m < nLast && previous->origin[m].id < p.id) ++m;
+        const bool seen = m < nLast && previous->origin[m].id == p.id;
         row.clear();
-        if (kept && rowLasts(previous->origin[n], p))
+        if (seen && rowLasts(previous->origin[m], p))
         {
-            const ParticleCellMap::Row last = previous->map.cells(n);
+            const ParticleCellMap::Row last = previous->map.cells(m);
             row.assign(last.begin(), last.end());
-            result.centreCell[n] = previous->centreCell[n];
-            result.origin[n] = previous->origin[n];
+            result.centreCell[n] = previous->centreCell[m];
+            result.origin[n] = previous->origin[m];
             ++result.rowsKept;
         }
         else
         {
-            const label centre = mesh.findCell(p.x, hinted ? centreHints[n] : -1);
+            const label hint = seen ? previous->centreCell[m] : (hinted ? centreHints[n] : -1);
+            const label centre = mesh.findCell(p.x, hint);
             result.centreCell[n] = centre;
+            result.origin[n] = RowOrigin{p.id, p.x, p.radius, 0.0};
             if (centre < 0)
             {
                 result.lostParticles.push_back(n);
             }
             else
             {
-                result.origin[n] = RowOrigin{p.id, p.x, p.radius, distribute(mesh, p, centre, row)};
+                result.origin[n].clearance = distribute(mesh, p, centre, row);
             }
         }
         const double volume = p.volume();

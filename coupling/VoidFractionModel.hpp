@@ -92,11 +92,12 @@ public:
     // so a hint saves the octree search.
     VoidFractionResult compute(const CellLocator& mesh, const std::vector<Particle>& particles,
                                const std::vector<label>& centreHints = {}) const;
-    // The same, taking over from previous (last step's mapping of the same
-    // particles, in the same order) the row of each particle that has moved
-    // less than its row's clearance since the row was made: its pieces are
-    // all still in the same cells, so the row is the one distribute() would
-    // make, to the bit. Most particles of a bed are slow: their rows last.
+    // The same, from previous (last step's mapping; particles matched by
+    // id, both in increasing id order): a particle that has moved less than
+    // its row's clearance since the row was made keeps the row, since its
+    // pieces are all still in the same cells and distribute() would make the
+    // same row to the bit; the others search from last step's centre cell.
+    // Most particles of a bed are slow: their rows last.
     VoidFractionResult compute(const CellLocator& mesh, const std::vector<Particle>& particles,
                                const VoidFractionResult& previous) const;
 
