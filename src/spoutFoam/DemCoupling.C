@@ -452,7 +452,7 @@ VoidFractionResult DemCoupling::mapParticles()
     }
     stopIfAnyRank(found);
     VoidFractionResult vf =
-        voidFractionModel_->compute(locator_, particles_, mapping_);
+        voidFractionModel_->compute(locator_, particles_, vf_);   // the last step's
 
     // A rank's atoms lie in its cells or its halo; a centre in neither is
     // outside the mesh.
@@ -484,7 +484,6 @@ VoidFractionResult DemCoupling::mapParticles()
         vf = voidFractionModel_->compute(locator_, particles_);
     }
 
-    mapping_ = vf;   // hints and lasting rows for the next step
     rowsKept_ += double(vf.rowsKept);
     rowsMapped_ += double(particles_.size());
     eps_ = voidFractionModel_->voidFraction(locator_, vf.solidVolume);

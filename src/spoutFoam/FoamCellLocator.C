@@ -417,15 +417,14 @@ bool FoamCellLocator::findCellsOnLattice
 
 double FoamCellLocator::clearance(const Vec3& p, label cell) const
 {
-    if (cell >= 0) return std::max(0.0, depthInside(p, cell));
-    if (!onLattice()) return 0;
+    if (!onLattice()) return cell >= 0 ? std::max(0.0, depthInside(p, cell)) : 0;
     const Lattice& L = lattice_;
     const double x[3] = {p.x, p.y, p.z};
     double inside = 1e300, beyond = 0;
     for (int a = 0; a < 3; ++a)
     {
-        // in boxes; latticeCell takes points up to 1e-9 box beyond the
-        // lattice as on it
+        // in boxes (a cell's box faces are its face planes, to round-off);
+        // latticeCell takes points up to 1e-9 box beyond the lattice as on it
         const double t = (x[a] - L.origin[a])*L.inverse[a];
         const double out = std::max(-t, t - double(L.n[a])) - 1e-9;
         beyond = std::max(beyond, out*L.spacing[a]);
