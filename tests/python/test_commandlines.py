@@ -122,7 +122,7 @@ class Defaults(unittest.TestCase):
         _, a = results.parse(['ums', 'circ', '--heat', 'h', '--noplates', 'a',
                               '--noplates', 'b', '-o', 'out.md', '--mixing', 'm'])
         self.assertEqual((a.cases, a.heat, a.noplates, a.maps, a.mixing, a.out),
-                         (['ums', 'circ'], 'h', ['a', 'b'], None, 'm', 'out.md'))
+                         (['ums', 'circ'], 'h', ['a', 'b'], None, ['m'], 'out.md'))
 
     def test_mixing(self):
         a = mixing.parse(['-j', '2', 'e=0.8'])

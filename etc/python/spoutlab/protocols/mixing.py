@@ -39,6 +39,8 @@ POINTS = [('no-plates', 10000, 2.0), ('no-plates', 26000, 2.5), ('no-plates', 26
           ('plates', 26000, 2.0), ('no-plates', 26000, 2.2), ('no-plates', 26000, 2.7),
           ('no-plates', 10000, 2.5), ('no-plates', 10000, 3.0), ('no-plates', 26000, 2.0)]
 
+DEFAULT_TIME = 4.0   # simulated seconds per run
+
 
 def point(text):
     try:
@@ -57,7 +59,7 @@ def parse(argv):
                    default=POINTS, metavar='VESSEL:N:U,...',
                    help='runs as vessel (plates or no-plates), particles and superficial '
                         'velocity [m/s] (default: the papers\' points, see POINTS)')
-    p.add_argument('--time', type=float, default=4.0, metavar='T',
+    p.add_argument('--time', type=float, default=DEFAULT_TIME, metavar='T',
                    help='simulated time per run [s] (default %(default)s)')
     p.add_argument('--write', type=float, default=0.1, metavar='DT',
                    help='particle output interval [s] (default %(default)s; sets this '

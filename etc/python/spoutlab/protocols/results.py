@@ -20,6 +20,7 @@ import sys
 
 from spoutlab import cli
 from spoutlab import spoutedbed
+from spoutlab.protocols import mixing as mixing_protocol
 
 
 def wall_time(case):
@@ -277,10 +278,14 @@ def mixing_paper(vessel, n, u):
 def mixing_section(case):
     """The degree of mixing (protocols/mixing's mixing.txt): a row and a
     results.csv key per run, M against time per bed, snapshots of the
-    papers' points."""
+    papers' points.  Runs longer or shorter than the protocol's default
+    (--time) get keys ending in _t<time>, and the figures of a case copy
+    that holds only such runs end so too, so that a longer run can stand
+    beside the default ones."""
     lines = open(os.path.join(case, 'mixing.txt')).read().splitlines()
     settings = lines[0].lstrip('# ')
     rows, keys, figures = [], [], []
+    times = set()
     for line in lines[1:]:
         m = re.match(r'(mix_(no)?plates_n(\d+)_u([\d.]+)): [^:]*, ([\d.]+) s: M_final ([\d.-]+) '
                      r'\(papers, left-right\), Lacey ([\d.-]+); lower-upper ([\d.-]+), Lacey '
@@ -289,6 +294,8 @@ def mixing_section(case):
             continue
         label, vessel = m.group(1), 'no-plates' if m.group(2) else 'plates'
         n, u, t_run = int(m.group(3)), float(m.group(4)), m.group(5)
+        times.add(float(t_run))
+        tag = '' if float(t_run) == mixing_protocol.DEFAULT_TIME else '_t%g' % float(t_run)
         paper = mixing_paper(vessel, n, u)
         hours = wall_time(os.path.join(case, 'runs', label)) / 3600
         rows.append(('M_final, %s, %d particles, u_s = %.1f m/s' % (
@@ -297,8 +304,8 @@ def mixing_section(case):
             '%s; %s s' % (settings, t_run), '%.2f h' % hours))
         bed = 'mixing%dk' % round(n / 1000) if vessel == 'no-plates' \
             else 'mixingDraft%dk' % round(n / 1000)
-        key = '%s.M_final' % bed if (vessel, n, u) == ('no-plates', 10000, 2.0) \
-            else '%s.M_final_u%.1f' % (bed, u)
+        key = ('%s.M_final' % bed if (vessel, n, u) == ('no-plates', 10000, 2.0)
+               else '%s.M_final_u%.1f' % (bed, u)) + tag
         keys.append((key, m.group(6), '', paper.split(' ')[0] if paper[:1].isdigit() else '',
                      'papers\' M, left-right halves; %s; %s s at %.1f m/s; Lacey %s' % (
                          settings, t_run, u, m.group(7))))
@@ -307,7 +314,8 @@ def mixing_section(case):
             last = [f for f in m.group(10).split() if f.endswith('_label.png')][-1:]
             figures += [(f, 'mixing_' + f) for f in last]
     beds = sorted({f for f in os.listdir(case) if re.match(r'mixing_\w+_n\d+\.png$', f)})
-    return rows, keys, [(f, f) for f in beds] + figures
+    tag = '_t%g' % min(times) if times and mixing_protocol.DEFAULT_TIME not in times else ''
+    return rows, keys, [(f, f[:-4] + tag + '.png') for f in beds] + figures
 
 
 # the runs whose label snapshots go into docs/figures
@@ -505,7 +513,7 @@ def remove_figures(section, figure_dir):
                 os.remove(os.path.join(figure_dir, f))
 
 
-def build(ums, circ, heat, figure_dir, noplates=(), maps=None, mixing=None):
+def build(ums, circ, heat, figure_dir, noplates=(), maps=None, mixing=()):
     """section -> (table rows, results.csv rows, figure names) for the runs given."""
     new = {}
 
@@ -566,8 +574,13 @@ def build(ums, circ, heat, figure_dir, noplates=(), maps=None, mixing=None):
         rows, keys, pngs = maps_section(maps)
         new['maps'] = (rows, keys, figures('maps', maps, pngs))
     if mixing:
-        rows, keys, pngs = mixing_section(mixing)
-        new['mixing'] = (rows, keys, figures('mixing', mixing, pngs))
+        # one section from every case copy given, figures from each
+        remove_figures('mixing', figure_dir)
+        rows, keys, pngs = [], [], []
+        for case in mixing:
+            r, k, p = mixing_section(case)
+            rows, keys, pngs = rows + r, keys + k, pngs + copy(case, p, figure_dir)
+        new['mixing'] = (rows, keys, pngs)
     return new
 
 
@@ -616,8 +629,9 @@ def parse(argv):
                         '10 000 or 26 000 particles (repeat for both)')
     p.add_argument('--maps', metavar='MAPS_DIR',
                    help='a case copy where protocols/velocityMaps ran (maps.txt)')
-    p.add_argument('--mixing', metavar='MIXING_DIR',
-                   help='a case copy where protocols/mixing ran (mixing.txt)')
+    p.add_argument('--mixing', action='append', default=[], metavar='MIXING_DIR',
+                   help='a case copy where protocols/mixing ran (mixing.txt); repeat for '
+                        'several, e.g. one with longer runs')
     p.add_argument('-o', dest='out', metavar='RESULTS.md',
                    default=os.path.join(os.environ.get('SPOUTLAB_DIR', '../..'), 'docs',
                                         'RESULTS.md'),
