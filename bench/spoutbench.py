@@ -84,15 +84,16 @@ def latest_time(case):
     return max(times)[1]
 
 
-def wall_per_simulated_second(log):
-    """From OpenFOAM's ClockTime between the first and the last step, so
-    start-up is left out; also the steps' times."""
+def per_simulated_second(log, clock='ClockTime'):
+    """Seconds of OpenFOAM's ClockTime (wall) or ExecutionTime (CPU) per
+    simulated second, between the first and the last step, so start-up is
+    left out; also the steps' times."""
     times, clocks = [], []
     t = None
     for line in open(log):
         if line.startswith('Time = '):
             t = float(line.split()[2])
-        m = re.search(r'ClockTime = ([0-9.e+-]+)', line)
+        m = re.search(r'%s = ([0-9.e+-]+)' % clock, line)
         if m and t is not None:
             times.append(t)
             clocks.append(float(m.group(1)))
