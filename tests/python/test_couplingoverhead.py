@@ -123,5 +123,79 @@ class OtherLoad(unittest.TestCase):
         self.assertNotIn('meaningless', co.side_by_side({1: SERIAL, 2: TWO}, cores=2))
 
 
+def load_weak():
+    path = os.path.join(REPOSITORY, 'bench', 'weakScaling')
+    loader = importlib.machinery.SourceFileLoader('weakScaling', path)
+    module = importlib.util.module_from_spec(importlib.util.spec_from_loader(
+        'weakScaling', loader))
+    loader.exec_module(module)
+    return module
+
+
+class WeakScaling(unittest.TestCase):
+    """bench/weakScaling: the widened column and what it reads from the
+    solver's log."""
+
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        self.mesh = os.path.join(self.tmp.name, 'blockMeshDict')
+        with open(os.path.join(REPOSITORY, 'openfoam_cases', 'minFluidisation', 'system',
+                               'blockMeshDict')) as f:
+            self.original = f.read()
+        with open(self.mesh, 'w') as f:
+            f.write(self.original)
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def test_widening_keeps_the_cell_size(self):
+        self.assertAlmostEqual(co.widen_mesh(self.mesh, 64), 64 * 0.12, places=12)
+        text = open(self.mesh).read()
+        self.assertRegex(text, r'(?m)^W\s+7\.68;')
+        self.assertRegex(text, r'(?m)^nx\s+384;')
+        # everything but the two entries as it was
+        strip = lambda t: [l for l in t.splitlines() if not l.startswith(('W ', 'nx '))]
+        self.assertEqual(strip(text), strip(self.original))
+
+    def test_widening_without_writing(self):
+        self.assertAlmostEqual(co.widen_mesh(self.mesh, 4, write=False), 0.48, places=12)
+        self.assertEqual(open(self.mesh).read(), self.original)
+
+    def test_widening_needs_the_entries(self):
+        with open(self.mesh, 'w') as f:
+            f.write(self.original.replace('nx  6;', 'cellsX 6;'))
+        with self.assertRaisesRegex(co.BenchError, 'entry nx'):
+            co.widen_mesh(self.mesh, 2)
+
+    def test_halo_figures_from_the_log(self):
+        log = os.path.join(self.tmp.name, 'log.spoutFoam')
+        with open(log, 'w') as f:
+            f.write('Parallel coupling: 4 x-slabs cut at 0.12 0.24 0.36 m; halo cells per rank '
+                    '(reach 0.006 m): 80 160 160 80\n'
+                    'Time = 0.0015\n'
+                    'Halo exchange per step, by rank (messages, kB): (7.2, 13.5) (14.4, 27) '
+                    '(14.6, 27.5) (7, 1.5e+01)\n')
+        cells, traffic = weak.exchange(log)
+        self.assertEqual(cells, [80, 160, 160, 80])
+        self.assertEqual(traffic, [(7.2, 13.5), (14.4, 27.0), (14.6, 27.5), (7.0, 15.0)])
+        row = weak.summary(4, cells, traffic)
+        self.assertEqual(row['halo_cells_max'], 160)
+        self.assertAlmostEqual(row['messages_interior'], 14.5)   # ranks 1 and 2
+        self.assertAlmostEqual(row['kB_interior'], 27.25)
+        self.assertAlmostEqual(row['kB_max'], 27.5)
+        self.assertAlmostEqual(row['kB_total'], 83.0)
+
+    def test_serial_run_has_no_halo(self):
+        log = os.path.join(self.tmp.name, 'log.spoutFoam')
+        with open(log, 'w') as f:
+            f.write('Time = 0.0015\nEnd\n')
+        row = weak.summary(1, *weak.exchange(log))
+        self.assertEqual((row['halo_cells_max'], row['messages_max'], row['kB_total']),
+                         (0, 0.0, 0.0))
+
+
+weak = load_weak()
+
+
 if __name__ == '__main__':
     unittest.main()
