@@ -1,6 +1,6 @@
 """Shared by the spouted-bed benchmarks (parallelSpeedup, neighbourSettings):
-the settled draft-plate bed, made once by the case's own Allrun, and
-spoutFoam runs from it or from a later written time.  Numpy-free."""
+the settled draft-plate bed, made once by the case's own Allrun, the spout
+developed from it, and spoutFoam runs from either.  Numpy-free."""
 import os
 import re
 import shutil
@@ -41,6 +41,18 @@ def settled_bed(base, n):
     return case
 
 
+def developed(settled, base, t):
+    """The bed spouting at 2.0 m/s since t = 0, written at t (made once,
+    serially)."""
+    case = os.path.join(base, 'developed-%g' % t)
+    if os.path.isdir(case) and any(f.startswith('restart_') for f in os.listdir(
+            os.path.join(case, 'DEM'))):
+        return case
+    print('%s: developing the spout to %g s (once) ...' % (os.path.basename(sys.argv[0]), t),
+          flush=True)
+    return run(settled, base, 1, t, os.path.basename(case), write=True)
+
+
 def run(source, base, ranks, end, name=None, start=None, variables=None, write=False):
     """spoutFoam on ranks ranks from source's settled bed (start None) or
     from its written time start, to end; writes nothing inside the run (or,
@@ -59,7 +71,10 @@ def run(source, base, ranks, end, name=None, start=None, variables=None, write=F
         with open(os.path.join(case, 'constant', 'couplingProperties'), 'a') as f:
             f.write('\nliggghtsVariables\n{\n%s}\n'
                     % ''.join('    %s %s;\n' % kv for kv in sorted(variables.items())))
-    script = '' if start else 'restore0Dir && cp %s 0/ && ' % os.path.join(source, '0', 'C')
+    # the cell centres: decomposeSlabs reads 0/C
+    script = 'restore0Dir && ' if not start else 'mkdir -p 0 && ' if ranks > 1 else ''
+    if script:
+        script += 'cp %s 0/ && ' % os.path.join(source, '0', 'C')
     script += ('foamDictionary -entry endTime -set %g system/controlDict > /dev/null && '
                'foamDictionary -entry writeInterval -set %g system/controlDict > /dev/null && '
                % (end, end if write else 10 * end))
