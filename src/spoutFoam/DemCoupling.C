@@ -461,6 +461,7 @@ VoidFractionResult DemCoupling::mapParticles()
     lost = gathered(lost, MPI_COMM_WORLD, true);
     if (!lost.empty())
     {
+        std::sort(lost.begin(), lost.end());   // the same line on any ranks
         std::string ids;
         for (std::size_t k = 0; k < lost.size() && k < 20; ++k)
         {

@@ -414,7 +414,10 @@ void LiggghtsDem::deleteParticles(const std::vector<long>& ids)
     std::string group = "group spoutFoamLost id";
     for (long id : ids) group += " " + std::to_string(id);
     command(group);
-    command("delete_atoms group spoutFoamLost");
+    // compress no: the others keep their ids, as in the particle files
+    // written so far and whatever the decomposition (compress renumbers
+    // them rank by rank)
+    command("delete_atoms group spoutFoamLost compress no");
     command("group spoutFoamLost delete");
     // LIGGGHTS 3.8 refuses a set-up without atoms ("Atom types must start
     // from 1"); with none left there are no neighbour lists to rebuild
