@@ -71,10 +71,13 @@ def run(source, base, ranks, end, name=None, start=None, variables=None, write=F
         with open(os.path.join(case, 'constant', 'couplingProperties'), 'a') as f:
             f.write('\nliggghtsVariables\n{\n%s}\n'
                     % ''.join('    %s %s;\n' % kv for kv in sorted(variables.items())))
-    # the cell centres: decomposeSlabs reads 0/C
-    script = 'restore0Dir && ' if not start else 'mkdir -p 0 && ' if ranks > 1 else ''
-    if script:
-        script += 'cp %s 0/ && ' % os.path.join(source, '0', 'C')
+    centres = os.path.join(source, '0', 'C')   # decomposeSlabs reads 0/C
+    if not start:
+        script = 'restore0Dir && cp %s 0/ && ' % centres
+    elif ranks > 1:
+        script = 'mkdir -p 0 && cp %s 0/ && ' % centres
+    else:
+        script = ''
     script += ('foamDictionary -entry endTime -set %g system/controlDict > /dev/null && '
                'foamDictionary -entry writeInterval -set %g system/controlDict > /dev/null && '
                % (end, end if write else 10 * end))
