@@ -52,16 +52,16 @@ std::vector<double> VoidFractionModel::voidFraction(const CellLocator& mesh,
     return clippedVoidFraction(mesh, solidVolume, voidFractionMin_);
 }
 
-VoidFractionResult VoidFractionModel::compute(const CellLocator& mesh, const std::vector<Particle>& particles,
-                                              const std::vector<label>& centreHints) const
+VoidFractionResult VoidFractionModel::compute(const CellLocator& mesh,
+                                              const std::vector<Particle>& particles) const
 {
-    return map(mesh, particles, centreHints, nullptr);
+    return map(mesh, particles, nullptr);
 }
 
 VoidFractionResult VoidFractionModel::compute(const CellLocator& mesh, const std::vector<Particle>& particles,
                                               const VoidFractionResult& previous) const
 {
-    return map(mesh, particles, {}, &previous);
+    return map(mesh, particles, &previous);
 }
 
 namespace
@@ -80,10 +80,8 @@ bool rowLasts(const RowOrigin& origin, const Particle& p)
 } // namespace
 
 VoidFractionResult VoidFractionModel::map(const CellLocator& mesh, const std::vector<Particle>& particles,
-                                          const std::vector<label>& centreHints,
                                           const VoidFractionResult* previous) const
 {
-    const bool hinted = centreHints.size() == particles.size();
     // previous's particles are walked beside these by id (both in increasing
     // id order, as LiggghtsDem gives them): atoms that moved to or from
     // another rank shift the slots, not the match
@@ -110,7 +108,7 @@ VoidFractionResult VoidFractionModel::map(const CellLocator& mesh, const std::ve
         }
         else
         {
-            const label hint = seen ? previous->centreCell[m] : (hinted ? centreHints[n] : -1);
+            const label hint = seen ? previous->centreCell[m] : -1;
             const label centre = mesh.findCell(p.x, hint);
             result.centreCell[n] = centre;
             result.origin[n] = RowOrigin{p.id, p.x, p.radius, 0.0};

@@ -87,11 +87,8 @@ public:
 
     virtual std::string name() const = 0;
 
-    // centreHints: optional, per particle, a cell near its centre (e.g. last
-    // step's centreCell); particles move less than a cell per coupling step,
-    // so a hint saves the octree search.
-    VoidFractionResult compute(const CellLocator& mesh, const std::vector<Particle>& particles,
-                               const std::vector<label>& centreHints = {}) const;
+    // Every particle located and distributed afresh.
+    VoidFractionResult compute(const CellLocator& mesh, const std::vector<Particle>& particles) const;
     // The same, from previous (last step's mapping; particles matched by
     // id, both in increasing id order): a particle that has moved less than
     // its row's clearance since the row was made keeps the row, since its
@@ -122,7 +119,7 @@ private:
     double voidFractionMin_;
 
     VoidFractionResult map(const CellLocator& mesh, const std::vector<Particle>& particles,
-                           const std::vector<label>& centreHints, const VoidFractionResult* previous) const;
+                           const VoidFractionResult* previous) const;
 };
 
 } // namespace spoutlab
