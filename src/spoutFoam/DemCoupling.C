@@ -3,18 +3,12 @@
 \*---------------------------------------------------------------------------*/
 #include "DemCoupling.H"
 
-#include "DemTimeStep.hpp"
 #include "FoamParameters.H"
 #include "InputError.hpp"
-#include "OStringStream.H"
-#include "RankGather.H"
+#include "SlabDecomposition.H"
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
-#include <iomanip>
-#include <sstream>
 
 namespace spoutlab
 {
@@ -22,35 +16,12 @@ namespace spoutlab
 namespace
 {
 
-std::string format(double value)
-{
-    std::ostringstream os;
-    os << std::setprecision(4) << value;
-    return os.str();
-}
-
-
 // Sums over the ranks of the coupled run (one rank when serial).
 void sumOverRanks(double* data, std::size_t n)
 {
     MPI_Allreduce(MPI_IN_PLACE, data, int(n), MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
 }
 
-
-bool finite(double x) { return std::isfinite(x); }
-bool finite(const Foam::vector& v)
-{
-    return std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z());
-}
-bool finite(const Vec3& v)
-{
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
-
-std::string format(const Vec3& v)
-{
-    return "(" + format(v.x) + " " + format(v.y) + " " + format(v.z) + ")";
-}
 
 // A cell field the coupling computes and writes with the gas fields.
 Foam::IOobject outputField(const Foam::fvMesh& mesh, const Foam::word& name)
@@ -91,13 +62,10 @@ DemCoupling::DemCoupling
             Foam::IOobject::MUST_READ, Foam::IOobject::NO_WRITE
         )
     ),
-    couplingInterval_(dict_.get<Foam::label>("couplingInterval")),
-    deleteLost_(false),
-    maxCo_(dict_.getOrDefault<Foam::scalar>("maxCo", 1.0)),
-    lastWritten_(mesh.time().timeName()),
     startIndex_(mesh.time().timeIndex()),
     locator_(mesh),
-    vtk_(mesh.time().globalPath()/"particles", "particles"),
+    guards_(mesh),
+    particleOutput_(mesh.time().globalPath()/"particles"),
     Ksl_
     (
         outputField(mesh, "Ksl"), mesh,
@@ -119,6 +87,23 @@ DemCoupling::DemCoupling
         Foam::dimensionedVector(Foam::dimVelocity, Foam::Zero)
     )
 {
+    readControls();
+    selectModels();
+    startDem();
+    guards_.checkTimeSteps(*dem_, couplingInterval_, liggghtsInput_);
+    startHeat(phi, rho.value(), mu.value());
+    log_.reset(new CouplingLog(mesh.time(), bool(heat_), resumed_));
+    writeFoamStub();
+    startFromBed();
+}
+
+
+// --- set-up ------------------------------------------------------------------
+
+void DemCoupling::readControls()
+{
+    couplingInterval_ = dict_.get<Foam::label>("couplingInterval");
+    maxCo_ = dict_.getOrDefault<Foam::scalar>("maxCo", 1.0);
     if (couplingInterval_ < 1)
     {
         throw InputError
@@ -137,7 +122,11 @@ DemCoupling::DemCoupling
         );
     }
     deleteLost_ = (lost == "delete");
+}
 
+
+void DemCoupling::selectModels()
+{
     const Foam::word dragName = dict_.get<Foam::word>("dragModel");
     exchange_.reset
     (
@@ -149,112 +138,15 @@ DemCoupling::DemCoupling
     const Foam::word vfName = dict_.get<Foam::word>("voidFractionModel");
     voidFractionModel_ =
         VoidFractionModel::New(vfName, toParameters(dict_, vfName + "Props"));
-
-    startDem();
-    checkTimeSteps();
-    startHeat(phi, rho.value(), mu.value());
-
-    if (Foam::Pstream::master())
-    {
-        const Foam::fileName dir = mesh.time().globalPath()/"postProcessing";
-        Foam::mkDir(dir);
-        const bool fresh = mesh.time().value() == 0;
-        // a restart continues the log of the run it resumes: rows a killed
-        // run wrote after its last write time go, and so does the row of the
-        // restart time itself unless the step state keeps it exact
-        if (!fresh)
-        {
-            trimLog(dir/"coupling.csv", resumed_ ? 0.5 : -0.5);
-        }
-        log_.reset
-        (
-            new std::ofstream
-            (
-                dir/"coupling.csv",
-                fresh ? std::ios::trunc : std::ios::app
-            )
-        );
-        if (fresh || log_->tellp() == 0)
-        {
-            *log_
-                << "time [s],particles,particle mass [kg],solid volume [m3],"
-                << "min voidfraction,"
-                << "particle drag x [N],particle drag y [N],particle drag z [N],"
-                << "gas exchange x [N],gas exchange y [N],gas exchange z [N],"
-                << "gas received x [N],gas received y [N],gas received z [N]";
-            if (heat_)
-            {
-                *log_
-                    << ",heat to particles [W],heat from gas [W],"
-                    << "gas enthalpy in [W],gas enthalpy out [W],"
-                    << "gas outlet temperature [K],gas energy [J],"
-                    << "particle energy [J],mean particle temperature [K]";
-            }
-            *log_ << '\n';
-        }
-        // ParaView opens OpenFOAM cases through an empty <case>.foam file
-        const Foam::fileName stub =
-            mesh.time().globalPath()/(mesh.time().globalCaseName() + ".foam");
-        if (!Foam::isFile(stub)) std::ofstream touch(stub);
-    }
-
-    // particles at the start time: map them so the first gas step already
-    // sees the bed.  A fresh run computes the fluid forces (and heat fluxes)
-    // for the first DEM steps here; a restart has them from its step state
-    // (the uninterrupted run computed them before that step's gas solve,
-    // from gas fields the time directory no longer holds).
-    vf_ = mapParticles();
-    voidfraction_.oldTime() = voidfraction_;
-    if (!resumed_)
-    {
-        exchange(vf_);
-        logGasMomentum();
-        transferHeat();
-        writeParticles();
-    }
-    if (mesh.time().value() == 0)
-    {
-        // what the run starts from, beside the initial conditions: the
-        // exchange of the settled bed (e.g. to compare decompositions)
-        voidfraction_.write();
-        Ksl_.write();
-        Us_.write();
-        solidFraction_.write();
-        dem_->writeStepState(mesh.time().globalPath()/"DEM"/"start.state");
-    }
 }
 
 
-void DemCoupling::trimLog(const std::string& file, double stepsPast) const
-{
-    std::ifstream in(file);
-    if (!in) return;
-    const double tMax =
-        mesh_.time().value() + stepsPast*mesh_.time().deltaTValue();
-    std::string kept, line;
-    while (std::getline(in, line))
-    {
-        // the header and every row up to the restart time
-        char* end = nullptr;
-        const double t = std::strtod(line.c_str(), &end);
-        if (end == line.c_str() || t <= tMax) kept += line + '\n';
-    }
-    in.close();
-    const std::string tmp = file + ".tmp";
-    std::ofstream(tmp, std::ios::trunc) << kept;
-    std::rename(tmp.c_str(), file.c_str());
-}
-
-
-void DemCoupling::startDem()
+std::map<std::string, std::string> DemCoupling::liggghtsVariables() const
 {
     const Foam::Time& runTime = mesh_.time();
-    const Foam::fileName caseDir = runTime.globalPath();
-    const Foam::fileName demDir = caseDir/"DEM";
-    if (Foam::Pstream::master()) Foam::mkDir(demDir);
-
+    const Foam::fileName demDir = runTime.globalPath()/"DEM";
     std::map<std::string, std::string> vars;
-    vars["case"] = caseDir;
+    vars["case"] = runTime.globalPath();
     vars["dem"] = demDir;
     if (const Foam::dictionary* user = dict_.findDict("liggghtsVariables"))
     {
@@ -275,98 +167,48 @@ void DemCoupling::startDem()
         }
         vars["restart"] = restart;
     }
+    return vars;
+}
+
+
+void DemCoupling::startDem()
+{
+    const Foam::fileName caseDir = mesh_.time().globalPath();
+    if (Foam::Pstream::master()) Foam::mkDir(caseDir/"DEM");
+    std::map<std::string, std::string> vars = liggghtsVariables();
 
     Foam::fileName input = dict_.get<Foam::fileName>("liggghtsInput");
     input.expand();
     if (!input.isAbsolute()) input = caseDir/input;
-
     vars["inputDir"] = input.path();   // for includes beside the input
     liggghtsInput_ = input;
     dem_.reset
     (
         new LiggghtsDem(input, vars, caseDir/"log.liggghts", MPI_COMM_WORLD)
     );
-    if (Foam::Pstream::parRun())
-    {
-        // each rank's atoms in its own cells; what they reach of the
-        // neighbours' cells becomes its halo
-        const std::vector<double> cuts = meshSlabs();
-        const double reach = dem_->reach();
-        for (std::size_t r = 0; r + 1 < cuts.size(); ++r)
-        {
-            if (cuts[r + 1] - cuts[r] < reach)
-            {
-                throw InputError
-                (
-                    "system/decomposeParDict: the x-slab of rank " + std::to_string(r)
-                  + " is " + format(cuts[r + 1] - cuts[r]) + " m wide, less than "
-                    "the particles' reach (largest radius + LIGGGHTS skin, "
-                  + format(reach) + " m); run on fewer ranks"
-                );
-            }
-        }
-        dem_->setSlabs(cuts);
-        locator_.addHalo(cuts, reach);
-        std::vector<double> halo(Foam::Pstream::nProcs(), 0.0);
-        halo[Foam::Pstream::myProcNo()] = double(locator_.nHaloCells());
-        sumOverRanks(halo.data(), halo.size());
-        Foam::Info<< "Parallel coupling: " << Foam::Pstream::nProcs()
-            << " x-slabs cut at";
-        for (std::size_t r = 1; r + 1 < cuts.size(); ++r) Foam::Info<< ' ' << cuts[r];
-        Foam::Info<< " m; halo cells per rank (reach " << reach << " m):";
-        for (const double h : halo) Foam::Info<< ' ' << label(h);
-        Foam::Info<< Foam::endl;
-    }
-    if (runTime.value() > 0)
-    {
-        const Foam::fileName state =
-            demDir/("restart_" + runTime.timeName() + ".state");
-        if (Foam::isFile(state))
-        {
-            dem_->readStepState(state);
-            resumed_ = true;
-        }
-        else
-        {
-            Foam::Info<< "spoutFoam: no DEM step state " << state << "; the "
-                "fluid forces of the first steps are recomputed from the gas "
-                "fields, so this restart is close to, not equal to, the "
-                "uninterrupted run" << Foam::endl;
-        }
-    }
+    if (Foam::Pstream::parRun()) matchSlabs(mesh_, *dem_, locator_);
+    resumeStepState();
     Foam::Info<< "LIGGGHTS: " << dem_->nParticles() << " particles from "
         << input << ", DEM time step " << dem_->timeStep() << " s" << Foam::endl;
 }
 
 
-std::vector<double> DemCoupling::meshSlabs() const
+void DemCoupling::resumeStepState()
 {
-    // each rank's x-extent, in rank order: the slabs must follow each other
-    const Foam::label nProcs = Foam::Pstream::nProcs();
-    std::vector<double> lo(nProcs, 0), hi(nProcs, 0);
-    const Foam::boundBox local(mesh_.points(), false);   // not reduced
-    lo[Foam::Pstream::myProcNo()] = local.min().x();
-    hi[Foam::Pstream::myProcNo()] = local.max().x();
-    sumOverRanks(lo.data(), lo.size());
-    sumOverRanks(hi.data(), hi.size());
-    const double tol = 1e-9*(hi.back() - lo.front());
-    for (Foam::label r = 1; r < nProcs; ++r)
+    const Foam::Time& runTime = mesh_.time();
+    if (runTime.value() <= 0) return;
+    const Foam::fileName state =
+        runTime.globalPath()/"DEM"/("restart_" + runTime.timeName() + ".state");
+    if (Foam::isFile(state))
     {
-        if (std::abs(lo[r] - hi[r-1]) > tol)
-        {
-            throw InputError
-            (
-                "system/decomposeParDict: the coupling expects the mesh in "
-                "x-slabs in rank order (etc/caseFunctions decomposeSlabs); "
-                "rank " + std::to_string(r - 1) + " spans x " + format(lo[r-1])
-              + " to " + format(hi[r-1]) + " m, rank " + std::to_string(r)
-              + " " + format(lo[r]) + " to " + format(hi[r]) + " m"
-            );
-        }
+        dem_->readStepState(state);
+        resumed_ = true;
+        return;
     }
-    std::vector<double> cuts(lo);
-    cuts.push_back(hi.back());
-    return cuts;
+    Foam::Info<< "spoutFoam: no DEM step state " << state << "; the "
+        "fluid forces of the first steps are recomputed from the gas "
+        "fields, so this restart is close to, not equal to, the "
+        "uninterrupted run" << Foam::endl;
 }
 
 
@@ -404,86 +246,64 @@ void DemCoupling::startHeat
 }
 
 
-void DemCoupling::checkTimeSteps() const
+void DemCoupling::writeFoamStub() const
 {
-    const double dtDem = dem_->timeStep();
-    const double dtCfd = mesh_.time().deltaTValue();
-    if (std::abs(dtCfd - couplingInterval_*dtDem) > 1e-9*dtCfd)
-    {
-        throw InputError
-        (
-            "system/controlDict: key 'deltaT' expected couplingInterval ("
-          + std::to_string(couplingInterval_) + ") x LIGGGHTS time step ("
-          + format(dtDem) + " s) = " + format(couplingInterval_*dtDem)
-          + " s, got " + format(dtCfd) + " s"
-        );
-    }
+    // ParaView opens OpenFOAM cases through an empty <case>.foam file
+    if (!Foam::Pstream::master()) return;
+    const Foam::Time& runTime = mesh_.time();
+    const Foam::fileName stub =
+        runTime.globalPath()/(runTime.globalCaseName() + ".foam");
+    if (!Foam::isFile(stub)) std::ofstream touch(stub);
+}
 
-    const double k = dem_->maxNormalStiffness();
-    const double m = dem_->minParticleMass();
-    if (k > 0 && dem_->nParticles() > 0)
+
+void DemCoupling::startFromBed()
+{
+    // particles at the start time: map them so the first gas step already
+    // sees the bed.  A fresh run computes the fluid forces (and heat fluxes)
+    // for the first DEM steps here; a restart has them from its step state
+    // (the uninterrupted run computed them before that step's gas solve,
+    // from gas fields the time directory no longer holds).
+    vf_ = mapParticles();
+    voidfraction_.oldTime() = voidfraction_;
+    if (!resumed_)
     {
-        const double limit = demTimeStepLimit(m, k);
-        if (dtDem > limit*(1 + 1e-9))   // round-off: dt exactly at the limit is fine
-        {
-            throw InputError
-            (
-                "LIGGGHTS input '" + liggghtsInput_ + "': DEM time step "
-              + format(dtDem)
-              + " s exceeds the limit of eq 11, pi*sqrt(m/k)/5 = "
-              + format(limit) + " s (lightest particle m = " + format(m)
-              + " kg, largest k_n = " + format(k) + " N/m)"
-            );
-        }
+        exchange(vf_);
+        row_.gasReceived = gasReceived();
+        transferHeat();
+        log_->write(row_);
+        writeParticles();
     }
+    if (mesh_.time().value() == 0)
+    {
+        // what the run starts from, beside the initial conditions: the
+        // exchange of the settled bed (e.g. to compare decompositions)
+        voidfraction_.write();
+        Ksl_.write();
+        Us_.write();
+        solidFraction_.write();
+        dem_->writeStepState(mesh_.time().globalPath()/"DEM"/"start.state");
+    }
+}
+
+
+// --- the step ----------------------------------------------------------------
+
+void DemCoupling::evolve()
+{
+    dem_->run(couplingInterval_);
+    vf_ = mapParticles();
+    exchange(vf_);
 }
 
 
 VoidFractionResult DemCoupling::mapParticles()
 {
     dem_->localParticles(particles_);
-    std::string found;
-    for (const Particle& p : particles_)
-    {
-        if (finite(p.x) && finite(p.v)) continue;
-        found = "non-finite position or velocity of particle " + std::to_string(p.id)
-              + " (x " + format(p.x) + ", v " + format(p.v) + ")";
-        break;
-    }
-    stopIfAnyRank(found);
+    guards_.checkParticles(particles_);
     VoidFractionResult vf =
         voidFractionModel_->compute(locator_, particles_, vf_);   // the last step's
-
-    // A rank's atoms lie in its cells or its halo; a centre in neither is
-    // outside the mesh.
-    std::vector<long> lost;
-    for (const std::size_t i : vf.lostParticles) lost.push_back(particles_[i].id);
-    lost = gathered(lost, MPI_COMM_WORLD, true);
-    if (!lost.empty())
-    {
-        std::sort(lost.begin(), lost.end());   // the same line on any ranks
-        std::string ids;
-        for (std::size_t k = 0; k < lost.size() && k < 20; ++k)
-        {
-            ids += (k ? ", " : "") + std::to_string(lost[k]);
-        }
-        if (lost.size() > 20) ids += ", ...";
-        const std::string what =
-            std::to_string(lost.size()) + " particle(s) outside the CFD mesh at t = "
-          + mesh_.time().timeName() + " s (ids " + ids + ")";
-        if (!deleteLost_)
-        {
-            throw InputError
-            (
-                what + "; set 'lostParticles delete' in "
-                "constant/couplingProperties to remove them instead"
-            );
-        }
-        Foam::Info<< "spoutFoam: deleting " << what.c_str() << Foam::endl;
-        dem_->deleteParticles(lost);
-        dem_->localParticles(particles_);
-        vf = voidFractionModel_->compute(locator_, particles_);
-    }
+    deleteLost(vf);
 
     rowsKept_ += double(vf.rowsKept);
     rowsMapped_ += double(particles_.size());
@@ -491,8 +311,19 @@ VoidFractionResult DemCoupling::mapParticles()
     Foam::scalarField& field = voidfraction_.primitiveFieldRef();
     forAll(field, celli) field[celli] = eps_[celli];
     voidfraction_.correctBoundaryConditions();
-    checkField(voidfraction_);
+    guards_.checkField(voidfraction_);
     return vf;
+}
+
+
+void DemCoupling::deleteLost(VoidFractionResult& vf)
+{
+    const std::vector<long> lost =
+        guards_.lostParticles(vf.lostParticles, particles_, deleteLost_);
+    if (lost.empty()) return;
+    dem_->deleteParticles(lost);
+    dem_->localParticles(particles_);
+    vf = voidFractionModel_->compute(locator_, particles_);
 }
 
 
@@ -507,7 +338,7 @@ void DemCoupling::exchange(const VoidFractionResult& vf)
         locator_, particles_, vf, GasCellFields{U, gradP, eps_}, gas_, g_
     );
     // before the forces reach LIGGGHTS or the log
-    checkParticles("fluid force", ex.totalForce);
+    guards_.checkParticles("fluid force", ex.totalForce, particles_);
 
     forAll(Ksl_, celli)
     {
@@ -531,11 +362,51 @@ void DemCoupling::exchange(const VoidFractionResult& vf)
         heat_->updateCoefficients(particles_, eps_, vf.map, ex);
         heat_->checkTimeStep(minHeatCapacityPerArea_);
     }
-    logStep(vf, ex);
+    fillMomentumRow(vf, ex);
 }
 
 
-void DemCoupling::logStep(const VoidFractionResult& vf, const ExchangeResult& ex)
+void DemCoupling::solveEnergy()
+{
+    if (!heat_) return;
+    heat_->solveGas();
+    guards_.checkField(heat_->T());
+    transferHeat();
+}
+
+
+void DemCoupling::transferHeat()
+{
+    if (!heat_) return;
+    // this rank's share, like the forces
+    heatFlux_ = heat_->particleHeatFlux(particles_, vf_.map);
+    guards_.checkParticles("heat flux", heatFlux_, particles_);
+    dem_->setHeatFluxes(heatFlux_);
+    row_.heat = heatRow();
+}
+
+
+void DemCoupling::endStep(const Foam::surfaceScalarField& phiU)
+{
+    row_.gasReceived = gasReceived();
+    guards_.checkCourant(phiU, maxCo_);
+    log_->write(row_);
+}
+
+
+void DemCoupling::checkGas() const
+{
+    guards_.checkField(U_);
+    guards_.checkField(p_);
+}
+
+
+// --- coupling.csv ------------------------------------------------------------
+
+void DemCoupling::fillMomentumRow
+(
+    const VoidFractionResult& vf, const ExchangeResult& ex
+)
 {
     double solid = 0;   // own cells: the halo's are the neighbours'
     for (label c = 0; c < locator_.nOwnedCells(); ++c) solid += vf.solidVolume[c];
@@ -548,24 +419,23 @@ void DemCoupling::logStep(const VoidFractionResult& vf, const ExchangeResult& ex
     }
     double sums[8] =
         {solid, drag.x, drag.y, drag.z, gas.x, gas.y, gas.z, double(particles_.size())};
-    const double mass = dem_->totalMass();
+    row_.particleMass = dem_->totalMass();
     sumOverRanks(sums, 8);
-    const long nParticles = std::lround(sums[7]);
-    const double epsMin = Foam::gMin(voidfraction_.primitiveField());
+    row_.time = mesh_.time().value();
+    row_.particles = std::lround(sums[7]);
+    row_.solidVolume = sums[0];
+    row_.minVoidFraction = Foam::gMin(voidfraction_.primitiveField());
+    row_.particleDrag = Vec3{sums[1], sums[2], sums[3]};
+    row_.gasExchange = Vec3{sums[4], sums[5], sums[6]};
 
-    Foam::Info<< "Coupling: " << nParticles << " particles, "
-        << "min voidfraction " << epsMin
+    Foam::Info<< "Coupling: " << row_.particles << " particles, "
+        << "min voidfraction " << row_.minVoidFraction
         << ", drag on particles (" << sums[1] << ' ' << sums[2] << ' '
         << sums[3] << ") N" << Foam::endl;
-    std::ostringstream row;
-    row << std::setprecision(10) << mesh_.time().value() << ','
-        << nParticles << ',' << mass << ',' << sums[0] << ',' << epsMin;
-    for (int k = 1; k < 7; ++k) row << ',' << sums[k];
-    logRow_ = row.str();   // ends after the gas solve (logGasMomentum)
 }
 
 
-void DemCoupling::logGasMomentum()
+Vec3 DemCoupling::gasReceived() const
 {
     // What the discretised momentum equation took from the particles: its
     // exchange term Ksl (Us - U) is implicit in U, so with the U just
@@ -578,182 +448,37 @@ void DemCoupling::logGasMomentum()
     }
     double sums[3] = {received.x, received.y, received.z};
     sumOverRanks(sums, 3);
-    std::ostringstream row;
-    row << std::setprecision(10) << ',' << sums[0] << ',' << sums[1] << ',' << sums[2];
-    logRow_ += row.str();
-    if (!heat_) endLogRow();   // with heat, the row ends after the gas energy
+    return Vec3{sums[0], sums[1], sums[2]};
 }
 
 
-void DemCoupling::logHeat()
+HeatRow DemCoupling::heatRow() const
 {
     double toParticles = 0;
     for (double q : heatFlux_) toParticles += q;
     sumOverRanks(&toParticles, 1);
     const GasHeatBalance b = heat_->balance();
     const LiggghtsDem::HeatContent particles = dem_->heatContent();
-    const double Ep = particles.energy;
-    const double meanTp = Ep/std::max(particles.capacity, 1e-300);
-
-    std::ostringstream row;
-    // energies of order 1e6 J change by a few J per step: 15 digits keep
-    // the step-by-step balance readable from the file
-    row << std::setprecision(15) << ',' << toParticles << ',' << b.gasGave
-        << ',' << b.inflow << ',' << b.outflow << ',' << b.outletTemperature
-        << ',' << b.gasEnergy << ',' << Ep << ',' << meanTp;
-    logRow_ += row.str();
+    const double meanTp = particles.energy/std::max(particles.capacity, 1e-300);
     Foam::Info<< "Heat: " << toParticles << " W to the particles, mean "
         << "particle temperature " << meanTp << " K, gas outlet "
         << b.outletTemperature << " K" << Foam::endl;
-    endLogRow();
-}
-
-
-void DemCoupling::endLogRow()
-{
-    if (log_)
+    return HeatRow
     {
-        *log_ << logRow_ << '\n';
-        log_->flush();
-    }
-    logRow_.clear();
+        toParticles, b.gasGave, b.inflow, b.outflow, b.outletTemperature,
+        b.gasEnergy, particles.energy, meanTp
+    };
 }
 
 
-void DemCoupling::evolve()
-{
-    dem_->run(couplingInterval_);
-    vf_ = mapParticles();
-    exchange(vf_);
-}
-
-
-void DemCoupling::solveEnergy()
-{
-    if (!heat_) return;
-    heat_->solveGas();
-    checkField(heat_->T());
-    transferHeat();
-}
-
-
-void DemCoupling::transferHeat()
-{
-    if (!heat_) return;
-    // this rank's share, like the forces
-    heatFlux_ = heat_->particleHeatFlux(particles_, vf_.map);
-    checkParticles("heat flux", heatFlux_);
-    dem_->setHeatFluxes(heatFlux_);
-    logHeat();
-}
-
-
-// --- guards against NaN and Inf --------------------------------------------
-// Each check is one pass over this rank's values and one integer reduction,
-// so every rank reaches the same decision; the first offending rank's
-// description goes to all.  Nothing of the failing step is written: the last
-// good state is the latest time directory, where 'startFrom latestTime'
-// restarts.
-
-void DemCoupling::stopIfAnyRank(const std::string& found) const
-{
-    int rank = 0, nProcs = 1;
-    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-    MPI_Comm_size(MPI_COMM_WORLD, &nProcs);
-    int first = found.empty() ? nProcs : rank;
-    MPI_Allreduce(MPI_IN_PLACE, &first, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD);
-    if (first == nProcs) return;
-
-    int n = int(found.size());
-    MPI_Bcast(&n, 1, MPI_INT, first, MPI_COMM_WORLD);
-    std::string what(found);
-    what.resize(std::size_t(n));
-    MPI_Bcast(&what[0], n, MPI_CHAR, first, MPI_COMM_WORLD);
-    throw InputError
-    (
-        what + " at t = " + mesh_.time().timeName() + " s; nothing of this "
-        "step was written, the last good state is time " + lastWritten_
-      + " (startFrom latestTime restarts from it)"
-    );
-}
-
-
-template<class Type>
-void DemCoupling::checkField
-(
-    const Foam::GeometricField<Type, Foam::fvPatchField, Foam::volMesh>& field
-) const
-{
-    std::string found;
-    const Foam::Field<Type>& values = field.primitiveField();
-    forAll(values, celli)
-    {
-        if (finite(values[celli])) continue;
-        const Foam::vector& c = mesh_.C()[celli];
-        found = "non-finite " + field.name() + " in cell "
-              + std::to_string(celli) + " " + format(Vec3{c.x(), c.y(), c.z()});
-        if (Foam::Pstream::parRun())
-        {
-            found += " of processor " + std::to_string(Foam::Pstream::myProcNo());
-        }
-        break;
-    }
-    stopIfAnyRank(found);
-}
-
-
-template<class Value>
-void DemCoupling::checkParticles
-(
-    const std::string& what, const std::vector<Value>& values
-) const
-{
-    std::string found;
-    for (std::size_t i = 0; i < values.size(); ++i)
-    {
-        if (finite(values[i])) continue;
-        found = "non-finite " + what + " on particle "
-              + std::to_string(particles_[i].id) + " " + format(particles_[i].x);
-        break;
-    }
-    stopIfAnyRank(found);
-}
-
-
-void DemCoupling::checkGas() const
-{
-    checkField(U_);
-    checkField(p_);
-}
-
-
-void DemCoupling::checkCourant(const Foam::surfaceScalarField& phiU) const
-{
-    const Foam::scalarField sumPhi
-    (
-        Foam::fvc::surfaceSum(Foam::mag(phiU))().primitiveField()
-    );
-    const Foam::scalar Co =
-        0.5*Foam::gMax(sumPhi/mesh_.V().field())*mesh_.time().deltaTValue();
-    Foam::Info<< "Courant number (interstitial) max: " << Co << Foam::endl;
-    if (Co > maxCo_)
-    {
-        throw InputError
-        (
-            "gas Courant number " + format(Co) + " at t = "
-          + mesh_.time().timeName() + " s exceeds maxCo " + format(maxCo_)
-          + " (constant/couplingProperties); reduce deltaT and couplingInterval"
-        );
-    }
-}
-
+// --- output ------------------------------------------------------------------
 
 void DemCoupling::write()
 {
     const Foam::Time& runTime = mesh_.time();
     if (!runTime.writeTime()) return;
 
-    lastWritten_ = runTime.timeName();
+    guards_.written(runTime.timeName());
     writeParticles();
     // LIGGGHTS 3.8 cannot write a system without atoms (its set-up stops
     // with "Atom types must start from 1"): once lostParticles delete has
@@ -773,67 +498,25 @@ void DemCoupling::write()
 
 void DemCoupling::writeParticles()
 {
-    // one row per particle, gathered on the master: id, x (3), v (3),
-    // radius, T, fluid force (3), drag (3)[, heat flux, h]
-    const int width = heat_ ? 17 : 15;
-    std::vector<double> h;
-    if (heat_) h = heat_->particleH(vf_.map);
-    std::vector<double> rows;
-    rows.reserve(particles_.size()*width);
-    for (std::size_t i = 0; i < particles_.size(); ++i)
+    // with heat: the temperature, the heat flux handed to LIGGGHTS [W] and
+    // the h each particle sees
+    ParticleColumns columns;
+    columns.vectors = {{"fluidForce", &fluidForce_}, {"dragForce", &dragForce_}};
+    std::vector<double> T, h;
+    if (heat_)
     {
-        const Particle& p = particles_[i];
-        rows.insert
-        (
-            rows.end(),
-            {
-                double(p.id), p.x.x, p.x.y, p.x.z, p.v.x, p.v.y, p.v.z, p.radius,
-                p.temperature, fluidForce_[i].x, fluidForce_[i].y, fluidForce_[i].z,
-                dragForce_[i].x, dragForce_[i].y, dragForce_[i].z
-            }
-        );
-        if (heat_) rows.insert(rows.end(), {heatFlux_[i], h[i]});
+        for (const Particle& p : particles_) T.push_back(p.temperature);
+        h = heat_->particleH(vf_.map);
+        columns.scalars = {{"temperature", &T}, {"heatFlux", &heatFlux_}, {"h", &h}};
     }
-    rows = gathered(rows, MPI_COMM_WORLD, false);
-    if (!Foam::Pstream::master()) return;
-
-    const std::size_t n = rows.size()/width;
-    std::vector<std::size_t> order(n);
-    for (std::size_t k = 0; k < n; ++k) order[k] = k;
-    std::sort
-    (
-        order.begin(), order.end(),
-        [&](std::size_t a, std::size_t b) { return rows[a*width] < rows[b*width]; }
-    );
-    std::vector<Particle> all(n);
-    std::vector<Vec3> fluid(n), drag(n);
-    std::vector<double> T(n), q(n), hp(n);
-    for (std::size_t k = 0; k < n; ++k)
-    {
-        const double* r = &rows[order[k]*width];
-        all[k].id = long(r[0]);
-        all[k].x = Vec3{r[1], r[2], r[3]};
-        all[k].v = Vec3{r[4], r[5], r[6]};
-        all[k].radius = r[7];
-        T[k] = all[k].temperature = r[8];
-        fluid[k] = Vec3{r[9], r[10], r[11]};
-        drag[k] = Vec3{r[12], r[13], r[14]};
-        if (heat_) { q[k] = r[15]; hp[k] = r[16]; }
-    }
-    std::vector<std::pair<std::string, std::vector<double>>> scalars;
-    if (heat_) scalars = {{"temperature", T}, {"heatFlux", q}, {"h", hp}};
     const Foam::Time& runTime = mesh_.time();
-    vtk_.write
-    (
-        runTime.value(), runTime.timeName(), all,
-        {{"fluidForce", fluid}, {"dragForce", drag}}, scalars
-    );
+    particleOutput_.write(runTime.value(), runTime.timeName(), particles_, columns);
 }
 
 
 void DemCoupling::finish()
 {
-    if (log_) log_->flush();
+    log_->flush();
     // how often LIGGGHTS rebuilt its neighbour lists (bench/neighbourSettings):
     // a rebuild costs several plain DEM steps
     Foam::Info<< "LIGGGHTS: " << dem_->neighbourBuilds() << " neighbour list builds in "
