@@ -5,6 +5,7 @@
 
 #include "FoamParameters.H"
 #include "InputError.hpp"
+#include "LiggghtsStart.H"
 #include "SlabDecomposition.H"
 
 #include <algorithm>
@@ -23,15 +24,13 @@ void sumOverRanks(double* data, std::size_t n)
 }
 
 
-// A cell field the coupling computes and writes with the gas fields.
-Foam::IOobject outputField(const Foam::fvMesh& mesh, const Foam::word& name)
+Vec3 sumOverRanks(const Vec3& v)
 {
-    return Foam::IOobject
-    (
-        name, mesh.time().timeName(), mesh,
-        Foam::IOobject::NO_READ, Foam::IOobject::AUTO_WRITE
-    );
+    double sums[3] = {v.x, v.y, v.z};
+    sumOverRanks(sums, 3);
+    return Vec3{sums[0], sums[1], sums[2]};
 }
+
 
 } // namespace
 
@@ -66,26 +65,7 @@ DemCoupling::DemCoupling
     locator_(mesh),
     guards_(mesh),
     particleOutput_(mesh.time().globalPath()/"particles"),
-    Ksl_
-    (
-        outputField(mesh, "Ksl"), mesh,
-        Foam::dimensionedScalar(Foam::dimDensity/Foam::dimTime, Foam::Zero)
-    ),
-    Us_
-    (
-        outputField(mesh, "Us"), mesh,
-        Foam::dimensionedVector(Foam::dimVelocity, Foam::Zero)
-    ),
-    solidFraction_
-    (
-        outputField(mesh, "solidFraction"), mesh,
-        Foam::dimensionedScalar(Foam::dimless, Foam::Zero)
-    ),
-    solidFlux_
-    (
-        outputField(mesh, "solidFlux"), mesh,
-        Foam::dimensionedVector(Foam::dimVelocity, Foam::Zero)
-    )
+    fields_(mesh)
 {
     readControls();
     selectModels();
@@ -141,55 +121,14 @@ void DemCoupling::selectModels()
 }
 
 
-std::map<std::string, std::string> DemCoupling::liggghtsVariables() const
-{
-    const Foam::Time& runTime = mesh_.time();
-    const Foam::fileName demDir = runTime.globalPath()/"DEM";
-    std::map<std::string, std::string> vars;
-    vars["case"] = runTime.globalPath();
-    vars["dem"] = demDir;
-    if (const Foam::dictionary* user = dict_.findDict("liggghtsVariables"))
-    {
-        Parameters params = toParameters(dict_, "liggghtsVariables");
-        for (const Foam::word& key : user->toc()) vars[key] = params.getWord(key);
-    }
-    if (runTime.value() > 0)
-    {
-        const Foam::fileName restart =
-            demDir/("restart_" + runTime.timeName() + ".liggghts");
-        if (!Foam::isFile(restart))
-        {
-            throw InputError
-            (
-                "restart at t = " + runTime.timeName()
-              + " s needs the LIGGGHTS restart '" + restart + "' (missing)"
-            );
-        }
-        vars["restart"] = restart;
-    }
-    return vars;
-}
-
-
 void DemCoupling::startDem()
 {
-    const Foam::fileName caseDir = mesh_.time().globalPath();
-    if (Foam::Pstream::master()) Foam::mkDir(caseDir/"DEM");
-    std::map<std::string, std::string> vars = liggghtsVariables();
-
-    Foam::fileName input = dict_.get<Foam::fileName>("liggghtsInput");
-    input.expand();
-    if (!input.isAbsolute()) input = caseDir/input;
-    vars["inputDir"] = input.path();   // for includes beside the input
-    liggghtsInput_ = input;
-    dem_.reset
-    (
-        new LiggghtsDem(input, vars, caseDir/"log.liggghts", MPI_COMM_WORLD)
-    );
+    dem_ = startLiggghts(mesh_.time(), dict_, liggghtsInput_);
     if (Foam::Pstream::parRun()) matchSlabs(mesh_, *dem_, locator_);
     resumeStepState();
     Foam::Info<< "LIGGGHTS: " << dem_->nParticles() << " particles from "
-        << input << ", DEM time step " << dem_->timeStep() << " s" << Foam::endl;
+        << liggghtsInput_.c_str() << ", DEM time step " << dem_->timeStep()
+        << " s" << Foam::endl;
 }
 
 
@@ -217,32 +156,13 @@ void DemCoupling::startHeat
     const Foam::surfaceScalarField& phi, double rho, double mu
 )
 {
-    const Foam::word model =
-        dict_.getOrDefault<Foam::word>("heatTransferModel", "none");
-    if (model == "none") return;
-    // a bad name before what LIGGGHTS lacks for heat: the name is fixed first
-    HeatTransferModel::registry().require(model, "constant/couplingProperties");
-    if (!dem_->hasHeat())
-    {
-        throw InputError
-        (
-            "LIGGGHTS input '" + liggghtsInput_ + "': heat transfer "
-            "(heatTransferModel " + model + " in constant/couplingProperties) "
-            "expects the particle temperatures of 'fix ID all couple/cfd/"
-            "convection T0 <K>' and 'fix ID all property/global "
-            "thermalCapacity peratomtype ...'"
-        );
-    }
-    heat_.reset
+    heat_ = HeatCoupling::New
     (
-        new HeatCoupling(mesh_, locator_, dict_, model, voidfraction_, phi, rho, mu)
+        mesh_, locator_, dict_, *dem_, liggghtsInput_, voidfraction_, phi, rho, mu
     );
     // the particles' m c_p/A do not change during a run (deleting particles
     // can only raise the smallest), so it is taken once
-    minHeatCapacityPerArea_ = dem_->minHeatCapacityPerArea();
-    Foam::Info<< "Heat transfer: " << model.c_str() << ", gas c_p "
-        << heat_->gas().cp << " J/kg/K, k_c " << heat_->gas().kappa
-        << " W/m/K" << Foam::endl;
+    if (heat_) minHeatCapacityPerArea_ = dem_->minHeatCapacityPerArea();
 }
 
 
@@ -269,7 +189,7 @@ void DemCoupling::startFromBed()
     if (!resumed_)
     {
         exchange(vf_);
-        row_.gasReceived = gasReceived();
+        row_.gasReceived = sumOverRanks(fields_.gasMomentum(U_));
         transferHeat();
         log_->write(row_);
         writeParticles();
@@ -279,9 +199,7 @@ void DemCoupling::startFromBed()
         // what the run starts from, beside the initial conditions: the
         // exchange of the settled bed (e.g. to compare decompositions)
         voidfraction_.write();
-        Ksl_.write();
-        Us_.write();
-        solidFraction_.write();
+        fields_.write();
         dem_->writeStepState(mesh_.time().globalPath()/"DEM"/"start.state");
     }
 }
@@ -340,18 +258,7 @@ void DemCoupling::exchange(const VoidFractionResult& vf)
     // before the forces reach LIGGGHTS or the log
     guards_.checkParticles("fluid force", ex.totalForce, particles_);
 
-    forAll(Ksl_, celli)
-    {
-        Ksl_[celli] = ex.beta[celli];
-        const Vec3& us = ex.Us[celli];
-        Us_[celli] = Foam::vector(us.x, us.y, us.z);
-        solidFraction_[celli] = ex.solidFraction[celli];
-        solidFlux_[celli] = ex.solidFraction[celli]*Us_[celli];
-    }
-    Ksl_.correctBoundaryConditions();
-    Us_.correctBoundaryConditions();
-    solidFraction_.correctBoundaryConditions();
-    solidFlux_.correctBoundaryConditions();
+    fields_.update(ex);
 
     // this rank's share; summed over ranks only when written
     fluidForce_ = ex.totalForce;
@@ -388,7 +295,7 @@ void DemCoupling::transferHeat()
 
 void DemCoupling::endStep(const Foam::surfaceScalarField& phiU)
 {
-    row_.gasReceived = gasReceived();
+    row_.gasReceived = sumOverRanks(fields_.gasMomentum(U_));
     guards_.checkCourant(phiU, maxCo_);
     log_->write(row_);
 }
@@ -412,7 +319,7 @@ void DemCoupling::fillMomentumRow
     for (label c = 0; c < locator_.nOwnedCells(); ++c) solid += vf.solidVolume[c];
     Vec3 drag, gas;
     for (const Vec3& f : ex.dragForce) drag += f;
-    forAll(Ksl_, celli)
+    forAll(U_, celli)
     {
         const Vec3& u = Vec3{U_[celli].x(), U_[celli].y(), U_[celli].z()};
         gas += ex.beta[celli]*mesh_.V()[celli]*(u - ex.Us[celli]);
@@ -432,23 +339,6 @@ void DemCoupling::fillMomentumRow
         << "min voidfraction " << row_.minVoidFraction
         << ", drag on particles (" << sums[1] << ' ' << sums[2] << ' '
         << sums[3] << ") N" << Foam::endl;
-}
-
-
-Vec3 DemCoupling::gasReceived() const
-{
-    // What the discretised momentum equation took from the particles: its
-    // exchange term Ksl (Us - U) is implicit in U, so with the U just
-    // solved, not the U the particle drag was computed from.
-    Vec3 received;
-    forAll(Ksl_, celli)
-    {
-        const Foam::vector d = Ksl_[celli]*mesh_.V()[celli]*(U_[celli] - Us_[celli]);
-        received += Vec3{d.x(), d.y(), d.z()};
-    }
-    double sums[3] = {received.x, received.y, received.z};
-    sumOverRanks(sums, 3);
-    return Vec3{sums[0], sums[1], sums[2]};
 }
 
 
@@ -525,21 +415,9 @@ void DemCoupling::finish()
     sumOverRanks(rows, 2);
     Foam::Info<< "Void fraction: " << 100*rows[0]/std::max(rows[1], 1.0)
         << " % of the particles kept the last step's cells" << Foam::endl;
-    if (!Foam::Pstream::parRun()) return;
     // what the neighbour exchange cost, per rank and step (benchmarks)
-    const Foam::label nProcs = Foam::Pstream::nProcs();
     const double steps = std::max(1.0, double(mesh_.time().timeIndex() - startIndex_));
-    std::vector<double> messages(nProcs, 0.0), bytes(nProcs, 0.0);
-    messages[Foam::Pstream::myProcNo()] = locator_.traffic().messages/steps;
-    bytes[Foam::Pstream::myProcNo()] = locator_.traffic().bytes/steps;
-    sumOverRanks(messages.data(), messages.size());
-    sumOverRanks(bytes.data(), bytes.size());
-    Foam::Info<< "Halo exchange per step, by rank (messages, kB):";
-    for (Foam::label r = 0; r < nProcs; ++r)
-    {
-        Foam::Info<< " (" << messages[r] << ", " << bytes[r]/1024 << ")";
-    }
-    Foam::Info<< Foam::endl;
+    if (Foam::Pstream::parRun()) reportHaloTraffic(locator_, steps);
 }
 
 } // namespace spoutlab

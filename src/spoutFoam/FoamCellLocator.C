@@ -241,15 +241,13 @@ label FoamCellLocator::findOwned(const Vec3& p, label hint) const
 }
 
 
-void FoamCellLocator::buildLattice()
+bool FoamCellLocator::cellBoxes(std::vector<double>& lo, std::vector<double>& hi) const
 {
-    lattice_ = Lattice();
-    const label n = nCells();
-    if (n == 0) return;
-
     // each cell's bounds from its face planes; every plane must face along
     // an axis (a box; split faces of one side give the same plane)
-    std::vector<double> lo(3*n, 1e300), hi(3*n, -1e300);
+    const label n = nCells();
+    lo.assign(3*n, 1e300);
+    hi.assign(3*n, -1e300);
     for (label c = 0; c < n; ++c)
     {
         for (std::size_t k = planeStart_[c]; k < planeStart_[c + 1]; ++k)
@@ -259,13 +257,23 @@ void FoamCellLocator::buildLattice()
             for (int a = 0; a < 3; ++a)
             {
                 if (std::abs(std::abs(nk[a]) - 1) < 1e-9) axis = a;
-                else if (std::abs(nk[a]) > 1e-9) return;
+                else if (std::abs(nk[a]) > 1e-9) return false;
             }
-            if (axis < 0) return;
+            if (axis < 0) return false;
             if (nk[axis] > 0) hi[3*c + axis] = std::max(hi[3*c + axis], planes_[k].d);
             else lo[3*c + axis] = std::min(lo[3*c + axis], -planes_[k].d);
         }
     }
+    return true;
+}
+
+
+void FoamCellLocator::buildLattice()
+{
+    lattice_ = Lattice();
+    const label n = nCells();
+    std::vector<double> lo, hi;
+    if (n == 0 || !cellBoxes(lo, hi)) return;
 
     // one spacing per axis, every box at a whole number of spacings from
     // the lowest corner
@@ -508,27 +516,12 @@ void FoamCellLocator::addHalo(const std::vector<double>& cuts, double reach)
         if (sides_[1].rank >= 0 && hi.x >= cuts[rank + 1] - reach) sides_[1].sent.push_back(c);
     }
 
-    // their geometry: volume, bounds (6), number of faces, face planes (4 each)
-    std::vector<double> out[2], in[2];
-    for (int s = 0; s < 2; ++s)
-    {
-        for (const label c : sides_[s].sent)
-        {
-            Vec3 lo, hi;
-            cellBounds(mesh_, c, lo, hi);
-            out[s].insert(out[s].end(), {mesh_.V()[c], lo.x, lo.y, lo.z, hi.x, hi.y, hi.z});
-            out[s].push_back(double(planeStart_[c + 1] - planeStart_[c]));
-            for (std::size_t k = planeStart_[c]; k < planeStart_[c + 1]; ++k)
-            {
-                const Plane& f = planes_[k];
-                out[s].insert(out[s].end(), {f.nx, f.ny, f.nz, f.d});
-            }
-        }
-    }
-    std::vector<double> sizesOut[2], sizesIn[2];
+    // their geometry both ways: first the sizes, then the cells
+    std::vector<double> out[2], in[2], sizesOut[2], sizesIn[2];
     const int ranks[2] = {sides_[0].rank, sides_[1].rank};
     for (int s = 0; s < 2; ++s)
     {
+        out[s] = packedCells(sides_[s].sent);
         sizesOut[s] = {double(out[s].size()), double(sides_[s].sent.size())};
         sizesIn[s].assign(2, 0.0);
     }
@@ -543,31 +536,57 @@ void FoamCellLocator::addHalo(const std::vector<double>& cuts, double reach)
     {
         sides_[s].haloStart = haloVolume_.size();
         sides_[s].haloSize = std::size_t(sizesIn[s][1]);
-        std::size_t k = 0;
-        for (std::size_t i = 0; i < sides_[s].haloSize; ++i)
-        {
-            const double* cell = &in[s][k];
-            haloVolume_.push_back(cell[0]);
-            const double tol = 1e-9*std::cbrt(cell[0]);
-            haloMin_.push_back(Vec3{cell[1] - tol, cell[2] - tol, cell[3] - tol});
-            haloMax_.push_back(Vec3{cell[4] + tol, cell[5] + tol, cell[6] + tol});
-            const Vec3& lo = haloMin_.back();
-            const Vec3& hi = haloMax_.back();
-            haloBbMin_ = Vec3{std::min(haloBbMin_.x, lo.x), std::min(haloBbMin_.y, lo.y), std::min(haloBbMin_.z, lo.z)};
-            haloBbMax_ = Vec3{std::max(haloBbMax_.x, hi.x), std::max(haloBbMax_.y, hi.y), std::max(haloBbMax_.z, hi.z)};
-            const std::size_t nFaces = std::size_t(cell[7]);
-            for (std::size_t f = 0; f < nFaces; ++f)
-            {
-                const double* pl = &cell[8 + 4*f];
-                planes_.push_back(Plane{pl[0], pl[1], pl[2], pl[3]});
-                faceCell_.push_back(-1);   // no walks through the halo
-            }
-            planeStart_.push_back(planes_.size());
-            cellCells_.push_back(cellCells_.back());
-            k += 8 + 4*nFaces;
-        }
+        appendHaloCells(in[s], sides_[s].haloSize);
     }
     buildLattice();
+}
+
+
+std::vector<double> FoamCellLocator::packedCells(const std::vector<label>& cells) const
+{
+    // per cell: volume, bounds (6), number of faces, face planes (4 each)
+    std::vector<double> out;
+    for (const label c : cells)
+    {
+        Vec3 lo, hi;
+        cellBounds(mesh_, c, lo, hi);
+        out.insert(out.end(), {mesh_.V()[c], lo.x, lo.y, lo.z, hi.x, hi.y, hi.z});
+        out.push_back(double(planeStart_[c + 1] - planeStart_[c]));
+        for (std::size_t k = planeStart_[c]; k < planeStart_[c + 1]; ++k)
+        {
+            const Plane& f = planes_[k];
+            out.insert(out.end(), {f.nx, f.ny, f.nz, f.d});
+        }
+    }
+    return out;
+}
+
+
+void FoamCellLocator::appendHaloCells(const std::vector<double>& packed, std::size_t n)
+{
+    std::size_t k = 0;
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        const double* cell = &packed[k];
+        haloVolume_.push_back(cell[0]);
+        const double tol = 1e-9*std::cbrt(cell[0]);
+        haloMin_.push_back(Vec3{cell[1] - tol, cell[2] - tol, cell[3] - tol});
+        haloMax_.push_back(Vec3{cell[4] + tol, cell[5] + tol, cell[6] + tol});
+        const Vec3& lo = haloMin_.back();
+        const Vec3& hi = haloMax_.back();
+        haloBbMin_ = Vec3{std::min(haloBbMin_.x, lo.x), std::min(haloBbMin_.y, lo.y), std::min(haloBbMin_.z, lo.z)};
+        haloBbMax_ = Vec3{std::max(haloBbMax_.x, hi.x), std::max(haloBbMax_.y, hi.y), std::max(haloBbMax_.z, hi.z)};
+        const std::size_t nFaces = std::size_t(cell[7]);
+        for (std::size_t f = 0; f < nFaces; ++f)
+        {
+            const double* pl = &cell[8 + 4*f];
+            planes_.push_back(Plane{pl[0], pl[1], pl[2], pl[3]});
+            faceCell_.push_back(-1);   // no walks through the halo
+        }
+        planeStart_.push_back(planes_.size());
+        cellCells_.push_back(cellCells_.back());
+        k += 8 + 4*nFaces;
+    }
 }
 
 

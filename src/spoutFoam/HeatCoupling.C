@@ -94,6 +94,46 @@ const Foam::dimensionSet dimHeatPerVolumeKelvin(1, -1, -3, -1, 0);     // W/m3/K
 } // namespace
 
 
+std::unique_ptr<HeatCoupling> HeatCoupling::New
+(
+    const Foam::fvMesh& mesh,
+    const FoamCellLocator& cells,
+    const Foam::dictionary& couplingDict,
+    const LiggghtsDem& dem,
+    const std::string& liggghtsInput,
+    const Foam::volScalarField& voidfraction,
+    const Foam::surfaceScalarField& phi,
+    double rho,
+    double mu
+)
+{
+    const Foam::word model =
+        couplingDict.getOrDefault<Foam::word>("heatTransferModel", "none");
+    if (model == "none") return nullptr;
+    // a bad name before what LIGGGHTS lacks for heat: the name is fixed first
+    HeatTransferModel::registry().require(model, "constant/couplingProperties");
+    if (!dem.hasHeat())
+    {
+        throw InputError
+        (
+            "LIGGGHTS input '" + liggghtsInput + "': heat transfer "
+            "(heatTransferModel " + model + " in constant/couplingProperties) "
+            "expects the particle temperatures of 'fix ID all couple/cfd/"
+            "convection T0 <K>' and 'fix ID all property/global "
+            "thermalCapacity peratomtype ...'"
+        );
+    }
+    std::unique_ptr<HeatCoupling> heat
+    (
+        new HeatCoupling(mesh, cells, couplingDict, model, voidfraction, phi, rho, mu)
+    );
+    Foam::Info<< "Heat transfer: " << model.c_str() << ", gas c_p "
+        << heat->gas().cp << " J/kg/K, k_c " << heat->gas().kappa
+        << " W/m/K" << Foam::endl;
+    return heat;
+}
+
+
 HeatCoupling::HeatCoupling
 (
     const Foam::fvMesh& mesh,

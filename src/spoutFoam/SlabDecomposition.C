@@ -101,4 +101,22 @@ void matchSlabs(const Foam::fvMesh& mesh, LiggghtsDem& dem, FoamCellLocator& loc
     Foam::Info<< Foam::endl;
 }
 
+
+
+void reportHaloTraffic(const FoamCellLocator& locator, double steps)
+{
+    const Foam::label nProcs = Foam::Pstream::nProcs();
+    std::vector<double> messages(nProcs, 0.0), bytes(nProcs, 0.0);
+    messages[Foam::Pstream::myProcNo()] = locator.traffic().messages/steps;
+    bytes[Foam::Pstream::myProcNo()] = locator.traffic().bytes/steps;
+    sumOverRanks(messages);
+    sumOverRanks(bytes);
+    Foam::Info<< "Halo exchange per step, by rank (messages, kB):";
+    for (Foam::label r = 0; r < nProcs; ++r)
+    {
+        Foam::Info<< " (" << messages[r] << ", " << bytes[r]/1024 << ")";
+    }
+    Foam::Info<< Foam::endl;
+}
+
 } // namespace spoutlab

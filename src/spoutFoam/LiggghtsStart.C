@@ -1,0 +1,74 @@
+/*---------------------------------------------------------------------------*\
+    SpoutLab: the case's LIGGGHTS instance.
+\*---------------------------------------------------------------------------*/
+#include "LiggghtsStart.H"
+
+#include "FoamParameters.H"
+#include "InputError.hpp"
+
+#include <map>
+
+namespace spoutlab
+{
+
+namespace
+{
+
+std::map<std::string, std::string> liggghtsVariables
+(
+    const Foam::Time& runTime,
+    const Foam::dictionary& couplingDict
+)
+{
+    const Foam::fileName demDir = runTime.globalPath()/"DEM";
+    std::map<std::string, std::string> vars;
+    vars["case"] = runTime.globalPath();
+    vars["dem"] = demDir;
+    if (const Foam::dictionary* user = couplingDict.findDict("liggghtsVariables"))
+    {
+        Parameters params = toParameters(couplingDict, "liggghtsVariables");
+        for (const Foam::word& key : user->toc()) vars[key] = params.getWord(key);
+    }
+    if (runTime.value() > 0)
+    {
+        const Foam::fileName restart =
+            demDir/("restart_" + runTime.timeName() + ".liggghts");
+        if (!Foam::isFile(restart))
+        {
+            throw InputError
+            (
+                "restart at t = " + runTime.timeName()
+              + " s needs the LIGGGHTS restart '" + restart + "' (missing)"
+            );
+        }
+        vars["restart"] = restart;
+    }
+    return vars;
+}
+
+} // namespace
+
+
+std::unique_ptr<LiggghtsDem> startLiggghts
+(
+    const Foam::Time& runTime,
+    const Foam::dictionary& couplingDict,
+    std::string& inputFile
+)
+{
+    const Foam::fileName caseDir = runTime.globalPath();
+    if (Foam::Pstream::master()) Foam::mkDir(caseDir/"DEM");
+    std::map<std::string, std::string> vars = liggghtsVariables(runTime, couplingDict);
+
+    Foam::fileName input = couplingDict.get<Foam::fileName>("liggghtsInput");
+    input.expand();
+    if (!input.isAbsolute()) input = caseDir/input;
+    vars["inputDir"] = input.path();   // for includes beside the input
+    inputFile = input;
+    return std::unique_ptr<LiggghtsDem>
+    (
+        new LiggghtsDem(input, vars, caseDir/"log.liggghts", MPI_COMM_WORLD)
+    );
+}
+
+} // namespace spoutlab
