@@ -190,8 +190,8 @@ def report(a):
 
 
 def set_write_interval(path, dt):
-    """The top-level writeInterval of a controlDict (foamDictionary cannot
-    read it before ./generate has written the probes it includes)."""
+    """The top-level writeInterval of a controlDict, set as text (before any
+    OpenFOAM program has run in the case)."""
     text = open(path).read()
     new, n = re.subn(r'^writeInterval\s+[^;]*;', 'writeInterval   %g;' % dt, text, flags=re.M)
     if n != 1:
