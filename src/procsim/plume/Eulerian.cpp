@@ -333,17 +333,15 @@ inline double faceValue(Advection s, double u, double cc, double d)
 
 } // namespace
 
-void Transport::residual(std::vector<double>& r)
+// Cell gradients of C for the cross-diffusion terms of the transform: dC/dz
+// along the column, dC/dx and dC/dy along the terrain-following surface
+// (central differences, one-sided at the boundaries; unused, and not
+// computed, when K_H acts along the terrain).
+void Transport::crossTermGradients()
 {
     const TerrainGrid& g = g_;
     const int nx = g.nx, ny = g.ny, nz = g.nz;
-    const std::size_t nxy = static_cast<std::size_t>(nx) * ny;
-    const double bg = background_;
-    double out = 0;
-    for (std::size_t n = 0; n < r.size(); ++n) r[n] = src_[n];
-
-    // cell gradients for the cross-diffusion terms (zero on flat terrain)
-    for (int k = 0; k < (trueHorizontal_ ? nz : 0); ++k)
+    for (int k = 0; k < nz; ++k)
         for (int j = 0; j < ny; ++j)
             for (int i = 0; i < nx; ++i)
             {
@@ -357,8 +355,16 @@ void Transport::residual(std::vector<double>& r)
                 const int jl = std::max(j - 1, 0), ju = std::min(j + 1, ny - 1);
                 gys_[n] = ju > jl ? (c[g.idx(i, ju, k)] - c[g.idx(i, jl, k)]) / ((ju - jl) * g.dy) : 0.0;
             }
+}
 
-    // x faces
+// Fluxes through the x faces: advection (QUICK face values, the background
+// flowing in at the west and east boundaries) and K_H diffusion with its
+// cross term; what leaves the domain is added to `out`.
+void Transport::xFaceFluxes(std::vector<double>& r, double& out) const
+{
+    const TerrainGrid& g = g_;
+    const int nx = g.nx, ny = g.ny, nz = g.nz;
+    const double bg = background_;
     for (int k = 0; k < nz; ++k)
         for (int j = 0; j < ny; ++j)
         {
@@ -395,7 +401,14 @@ void Transport::residual(std::vector<double>& r)
                 rr[i] += phi;
             }
         }
-    // y faces
+}
+
+// Fluxes through the y faces, as for x (south and north boundaries).
+void Transport::yFaceFluxes(std::vector<double>& r, double& out) const
+{
+    const TerrainGrid& g = g_;
+    const int nx = g.nx, ny = g.ny, nz = g.nz;
+    const double bg = background_;
     for (int k = 0; k < nz; ++k)
         for (int j = 0; j <= ny; ++j)
         {
@@ -431,7 +444,17 @@ void Transport::residual(std::vector<double>& r)
                 r[nR] += phi;
             }
         }
-    // s faces (k = 0 is the ground: no flux)
+}
+
+// Fluxes through the s faces: vertical advection, K_V diffusion (left to the
+// Crank-Nicolson step when implicit) and the cross terms; no flux through
+// the ground (k = 0), open at the top.
+void Transport::sFaceFluxes(std::vector<double>& r, double& out) const
+{
+    const TerrainGrid& g = g_;
+    const int nx = g.nx, ny = g.ny, nz = g.nz;
+    const std::size_t nxy = static_cast<std::size_t>(nx) * ny;
+    const double bg = background_;
     for (int k = 1; k <= nz; ++k)
         for (int j = 0; j < ny; ++j)
             for (int i = 0; i < nx; ++i)
@@ -458,6 +481,17 @@ void Transport::residual(std::vector<double>& r)
                 r[nL] -= phi;
                 r[nR] += phi;
             }
+}
+
+// dM/dt of every cell: its sources plus the net flux through its faces.
+void Transport::residual(std::vector<double>& r)
+{
+    for (std::size_t n = 0; n < r.size(); ++n) r[n] = src_[n];
+    if (trueHorizontal_) crossTermGradients();
+    double out = 0; // through the open boundaries
+    xFaceFluxes(r, out);
+    yFaceFluxes(r, out);
+    sFaceFluxes(r, out);
     lastOut_ = out;
 }
 

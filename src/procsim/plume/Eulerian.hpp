@@ -193,6 +193,10 @@ private:
     std::vector<double> rhsCol_, aCol_, bCol_, cCol_;
 
     void residual(std::vector<double>& r);
+    void crossTermGradients();
+    void xFaceFluxes(std::vector<double>& r, double& out) const;
+    void yFaceFluxes(std::vector<double>& r, double& out) const;
+    void sFaceFluxes(std::vector<double>& r, double& out) const;
 };
 
 } // namespace procsim::plume
