@@ -194,6 +194,130 @@ void readProfile(const YamlInput& pr, Plant& p)
     p.electricityTolerance = pr.within("electricity_tolerance_percent", 1e-06, 10000.0, "%") / 100;
 }
 
+// How long a batch may run and how often its state is written.
+void readRun(const YamlInput& r, DryerCase& c)
+{
+    r.rejectUnknown({"max_time_h", "output_interval_min"});
+    c.maxTime = r.within("max_time_h", 1e-06, 10000.0, "h") * 3600;
+    c.outputInterval = r.within("output_interval_min", 0.001, 1000000.0, "min") * 60;
+}
+
+// The named venting arrangements, at least one.
+void readVentings(const YamlInput& in, Plant& p)
+{
+    const YamlInput v = in.child("venting");
+    for (const auto& name : v.keys()) p.venting[name] = readVenting(v.child(name));
+    if (p.venting.empty()) throw in.error("venting", "at least one named venting arrangement");
+}
+
+// What was measured on a batch: drying time, electricity and the moisture
+// spreads f1, f2.
+void readMeasured(const YamlInput& m, BatchSpec& s)
+{
+    m.rejectUnknown({"drying_time", "electricity_kWh", "f1_percent", "f2_percent"});
+    if (m.has("drying_time"))
+    {
+        try
+        {
+            s.measuredTime = parseHoursMinutes(m.text("drying_time"));
+        }
+        catch (const std::invalid_argument&)
+        {
+            throw m.error("drying_time", "hours:minutes such as '11:50'");
+        }
+    }
+    if (m.has("electricity_kWh"))
+        s.measuredElectricity = m.within("electricity_kWh", 1e-06, 1000000000.0, "kWh") * 3.6e6;
+    if (m.has("f1_percent")) s.measuredF1 = m.within("f1_percent", 0, 100, "%");
+    if (m.has("f2_percent")) s.measuredF2 = m.within("f2_percent", 0, 100, "%");
+}
+
+// One batch: its venting, the hot-air set-point between the ambient and
+// 150 degC, the dry mass and the moisture it starts from and must reach.
+BatchSpec readBatch(const YamlInput& b, const Plant& p)
+{
+    b.rejectUnknown({"id", "venting", "hot_air_temperature_C", "dry_mass_kg", "initial_moisture_percent_db",
+                     "target_moisture_percent_db", "initial_moisture_spread_percent", "pattern_seed",
+                     "measured", "note"});
+    BatchSpec s;
+    s.id = b.text("id");
+    checkFileNamePart(s.id, b.file() + ": key '" + b.path() + ".id'"); // names the batch's result files
+    s.venting = b.text("venting");
+    if (!p.venting.count(s.venting)) throw b.error("venting", "the name of an arrangement under 'venting'");
+    s.hotAirC = b.within("hot_air_temperature_C", -50, 500, "degC");
+    if (!(s.hotAirC > p.base.ambientC))
+        throw b.error("hot_air_temperature_C",
+                      "a set-point above the ambient " + fmt(p.base.ambientC) + " degC");
+    if (!(s.hotAirC <= 150)) throw b.error("hot_air_temperature_C", "a set-point of at most 150 degC");
+    s.dryMass = b.within("dry_mass_kg", 1e-06, 1000000000.0, "kg");
+    s.x0 = b.within("initial_moisture_percent_db", 1e-06, 10000.0, "% dry basis") / 100;
+    s.xTarget = b.within("target_moisture_percent_db", 1e-06, 10000.0, "% dry basis") / 100;
+    if (!(s.xTarget < s.x0))
+        throw b.error("target_moisture_percent_db",
+                      "a value below initial_moisture_percent_db (" + fmt(s.x0 * 100) + ")");
+    s.x0Spread = b.has("initial_moisture_spread_percent")
+                     ? b.within("initial_moisture_spread_percent", 0, 10000.0, "%") / 100
+                     : 0.0;
+    s.seed = static_cast<unsigned>(b.has("pattern_seed") ? b.integer("pattern_seed") : 1);
+    if (b.has("measured")) readMeasured(b.child("measured"), s);
+    return s;
+}
+
+// The batches, at least one, each with its own id.
+void readBatches(const YamlInput& in, Plant& p)
+{
+    for (const YamlInput& b : in.child("batches").items()) p.batches.push_back(readBatch(b, p));
+    if (p.batches.empty()) throw in.error("batches", "a non-empty list of batches");
+    rejectDuplicates(p.batches, &BatchSpec::id, in.file() + ": key 'batches'", "batch id");
+}
+
+// What calibration fits (each parameter within its bounds), on which
+// batches, and which batches it predicts with which venting.
+void readCalibration(const YamlInput& c, Plant& p)
+{
+    c.rejectUnknown({"fit", "calibrate_on", "predict", "predict_venting", "profile"});
+    for (const YamlInput& f : c.child("fit").items())
+    {
+        f.rejectUnknown({"parameter", "lower", "upper"});
+        FitParameter fp;
+        fp.name = knownParameter(p, f);
+        fp.lower = f.number("lower");
+        fp.upper = f.number("upper");
+        checkParameterValue(f, "lower", fp.name, fp.lower);
+        checkParameterValue(f, "upper", fp.name, fp.upper);
+        if (!(fp.lower < fp.upper)) throw f.error("upper", "a value above 'lower'");
+        p.fit.push_back(fp);
+    }
+    for (const YamlInput& id : c.child("calibrate_on").items())
+        p.calibrateOn.push_back(id.node().as<std::string>());
+    for (const YamlInput& id : c.child("predict").items()) p.predict.push_back(id.node().as<std::string>());
+    p.predictVenting = c.text("predict_venting");
+    if (!p.venting.count(p.predictVenting))
+        throw c.error("predict_venting", "the name of an arrangement under 'venting'");
+    for (const auto& id : p.calibrateOn) p.batch(id);
+    for (const auto& id : p.predict) p.batch(id);
+    if (c.has("profile")) readProfile(c.child("profile"), p);
+}
+
+// The what-if grid: one batch and venting, hot-air set-points above the
+// ambient and up to 150 degC, vented fractions from 0 to 1.
+void readWhatif(const YamlInput& w, Plant& p)
+{
+    w.rejectUnknown({"batch", "venting", "hot_air_temperatures_C", "vented_fractions"});
+    p.whatifBatch = w.text("batch");
+    p.batch(p.whatifBatch);
+    p.whatifVenting = w.text("venting");
+    if (!p.venting.count(p.whatifVenting))
+        throw w.error("venting", "the name of an arrangement under 'venting'");
+    p.whatifTemperatures = w.numbers("hot_air_temperatures_C", "degC");
+    for (double t : p.whatifTemperatures)
+        if (!(t > p.base.ambientC && t <= 150))
+            throw w.error("hot_air_temperatures_C", "set-points above ambient and <= 150 degC");
+    p.whatifVentedFractions = w.numbers("vented_fractions");
+    for (double f : p.whatifVentedFractions)
+        if (!(f >= 0 && f <= 1)) throw w.error("vented_fractions", "fractions from 0 to 1");
+}
+
 } // namespace
 
 std::vector<std::string> Plant::parameterNames()
@@ -314,112 +438,11 @@ Plant readPlant(const std::string& path)
     readProduct(in.child("product"), p.base);
     readKinetics(in.child("kinetics"), p.base);
     readOperation(in.child("operation"), p.base);
-    if (in.has("run"))
-    {
-        const YamlInput r = in.child("run");
-        r.rejectUnknown({"max_time_h", "output_interval_min"});
-        p.base.maxTime = r.within("max_time_h", 1e-06, 10000.0, "h") * 3600;
-        p.base.outputInterval = r.within("output_interval_min", 0.001, 1000000.0, "min") * 60;
-    }
-    const YamlInput v = in.child("venting");
-    for (const auto& name : v.keys()) p.venting[name] = readVenting(v.child(name));
-    if (p.venting.empty()) throw in.error("venting", "at least one named venting arrangement");
-
-    for (const YamlInput& b : in.child("batches").items())
-    {
-        b.rejectUnknown({"id", "venting", "hot_air_temperature_C", "dry_mass_kg",
-                         "initial_moisture_percent_db", "target_moisture_percent_db",
-                         "initial_moisture_spread_percent", "pattern_seed", "measured", "note"});
-        BatchSpec s;
-        s.id = b.text("id");
-        checkFileNamePart(s.id, b.file() + ": key '" + b.path() + ".id'"); // names the batch's result files
-        s.venting = b.text("venting");
-        if (!p.venting.count(s.venting))
-            throw b.error("venting", "the name of an arrangement under 'venting'");
-        s.hotAirC = b.within("hot_air_temperature_C", -50, 500, "degC");
-        if (!(s.hotAirC > p.base.ambientC))
-            throw b.error("hot_air_temperature_C",
-                          "a set-point above the ambient " + fmt(p.base.ambientC) + " degC");
-        if (!(s.hotAirC <= 150)) throw b.error("hot_air_temperature_C", "a set-point of at most 150 degC");
-        s.dryMass = b.within("dry_mass_kg", 1e-06, 1000000000.0, "kg");
-        s.x0 = b.within("initial_moisture_percent_db", 1e-06, 10000.0, "% dry basis") / 100;
-        s.xTarget = b.within("target_moisture_percent_db", 1e-06, 10000.0, "% dry basis") / 100;
-        if (!(s.xTarget < s.x0))
-            throw b.error("target_moisture_percent_db",
-                          "a value below initial_moisture_percent_db (" + fmt(s.x0 * 100) + ")");
-        s.x0Spread = b.has("initial_moisture_spread_percent")
-                         ? b.within("initial_moisture_spread_percent", 0, 10000.0, "%") / 100
-                         : 0.0;
-        s.seed = static_cast<unsigned>(b.has("pattern_seed") ? b.integer("pattern_seed") : 1);
-        if (b.has("measured"))
-        {
-            const YamlInput m = b.child("measured");
-            m.rejectUnknown({"drying_time", "electricity_kWh", "f1_percent", "f2_percent"});
-            if (m.has("drying_time"))
-            {
-                try
-                {
-                    s.measuredTime = parseHoursMinutes(m.text("drying_time"));
-                }
-                catch (const std::invalid_argument&)
-                {
-                    throw m.error("drying_time", "hours:minutes such as '11:50'");
-                }
-            }
-            if (m.has("electricity_kWh"))
-                s.measuredElectricity = m.within("electricity_kWh", 1e-06, 1000000000.0, "kWh") * 3.6e6;
-            if (m.has("f1_percent")) s.measuredF1 = m.within("f1_percent", 0, 100, "%");
-            if (m.has("f2_percent")) s.measuredF2 = m.within("f2_percent", 0, 100, "%");
-        }
-        p.batches.push_back(s);
-    }
-    if (p.batches.empty()) throw in.error("batches", "a non-empty list of batches");
-    rejectDuplicates(p.batches, &BatchSpec::id, in.file() + ": key 'batches'", "batch id");
-
-    if (in.has("calibration"))
-    {
-        const YamlInput c = in.child("calibration");
-        c.rejectUnknown({"fit", "calibrate_on", "predict", "predict_venting", "profile"});
-        for (const YamlInput& f : c.child("fit").items())
-        {
-            f.rejectUnknown({"parameter", "lower", "upper"});
-            FitParameter fp;
-            fp.name = knownParameter(p, f);
-            fp.lower = f.number("lower");
-            fp.upper = f.number("upper");
-            checkParameterValue(f, "lower", fp.name, fp.lower);
-            checkParameterValue(f, "upper", fp.name, fp.upper);
-            if (!(fp.lower < fp.upper)) throw f.error("upper", "a value above 'lower'");
-            p.fit.push_back(fp);
-        }
-        for (const YamlInput& id : c.child("calibrate_on").items())
-            p.calibrateOn.push_back(id.node().as<std::string>());
-        for (const YamlInput& id : c.child("predict").items())
-            p.predict.push_back(id.node().as<std::string>());
-        p.predictVenting = c.text("predict_venting");
-        if (!p.venting.count(p.predictVenting))
-            throw c.error("predict_venting", "the name of an arrangement under 'venting'");
-        for (const auto& id : p.calibrateOn) p.batch(id);
-        for (const auto& id : p.predict) p.batch(id);
-        if (c.has("profile")) readProfile(c.child("profile"), p);
-    }
-    if (in.has("whatif"))
-    {
-        const YamlInput w = in.child("whatif");
-        w.rejectUnknown({"batch", "venting", "hot_air_temperatures_C", "vented_fractions"});
-        p.whatifBatch = w.text("batch");
-        p.batch(p.whatifBatch);
-        p.whatifVenting = w.text("venting");
-        if (!p.venting.count(p.whatifVenting))
-            throw w.error("venting", "the name of an arrangement under 'venting'");
-        p.whatifTemperatures = w.numbers("hot_air_temperatures_C", "degC");
-        for (double t : p.whatifTemperatures)
-            if (!(t > p.base.ambientC && t <= 150))
-                throw w.error("hot_air_temperatures_C", "set-points above ambient and <= 150 degC");
-        p.whatifVentedFractions = w.numbers("vented_fractions");
-        for (double f : p.whatifVentedFractions)
-            if (!(f >= 0 && f <= 1)) throw w.error("vented_fractions", "fractions from 0 to 1");
-    }
+    if (in.has("run")) readRun(in.child("run"), p.base);
+    readVentings(in, p);
+    readBatches(in, p);
+    if (in.has("calibration")) readCalibration(in.child("calibration"), p);
+    if (in.has("whatif")) readWhatif(in.child("whatif"), p);
     return p;
 }
 
