@@ -62,7 +62,7 @@ int main(int argc, char** argv)
     }
     catch (const procsim::InputError& e)
     {
-        std::cerr << "procsim: " << e.what() << '\n';
+        std::cerr << "procsim: " << procsim::messageLine(e.what()) << '\n';
         return 2;
     }
 }

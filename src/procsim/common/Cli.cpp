@@ -1,5 +1,6 @@
 #include "common/Cli.hpp"
 
+#include <algorithm>
 #include <exception>
 #include <filesystem>
 #include <iostream>
@@ -18,17 +19,77 @@ bool isHelp(const std::string& arg)
 namespace
 {
 
-// One line: a message with line breaks (a library's text) is folded.
-std::string oneLine(std::string text)
+std::string escaped(unsigned char byte)
 {
-    for (char& ch : text)
+    const char* hex = "0123456789abcdef";
+    return {'\\', 'x', hex[byte >> 4], hex[byte & 15]};
+}
+
+// The length of the well-formed UTF-8 sequence at text[i] (RFC 3629: no
+// overlong forms, no surrogates, nothing above U+10FFFF), or 0.
+std::size_t utf8Length(const std::string& text, std::size_t i)
+{
+    const auto at = [&](std::size_t k) { return static_cast<unsigned char>(text[k]); };
+    const unsigned char lead = at(i);
+    std::size_t n = 0;
+    unsigned char lo = 0x80, hi = 0xbf; // the range of the second byte
+    if (lead >= 0xc2 && lead <= 0xdf)
+        n = 2;
+    else if (lead >= 0xe0 && lead <= 0xef)
     {
-        if (ch == '\n' || ch == '\r') ch = ' ';
+        n = 3;
+        if (lead == 0xe0) lo = 0xa0;
+        if (lead == 0xed) hi = 0x9f;
     }
-    return text;
+    else if (lead >= 0xf0 && lead <= 0xf4)
+    {
+        n = 4;
+        if (lead == 0xf0) lo = 0x90;
+        if (lead == 0xf4) hi = 0x8f;
+    }
+    if (n == 0 || i + n > text.size() || at(i + 1) < lo || at(i + 1) > hi) return 0;
+    for (std::size_t k = 2; k < n; ++k)
+        if (at(i + k) < 0x80 || at(i + k) > 0xbf) return 0;
+    return n;
+}
+
+// U+0080..U+009F (C1 controls, NEL among them), U+2028 and U+2029 break
+// lines for some readers (Python's splitlines, a few terminals).
+bool breaksLine(const std::string& sequence)
+{
+    const auto b = [&](std::size_t k) { return static_cast<unsigned char>(sequence[k]); };
+    if (sequence.size() == 2) return b(0) == 0xc2 && b(1) <= 0x9f;
+    return sequence.size() == 3 && b(0) == 0xe2 && b(1) == 0x80 && (b(2) == 0xa8 || b(2) == 0xa9);
 }
 
 } // namespace
+
+std::string messageLine(const std::string& text)
+{
+    std::string line;
+    std::size_t i = 0;
+    while (i < text.size())
+    {
+        const auto byte = static_cast<unsigned char>(text[i]);
+        if (byte < 0x80)
+        {
+            if (byte == '\n' || byte == '\r')
+                line += ' ';
+            else if (byte < 0x20 || byte == 0x7f)
+                line += escaped(byte);
+            else
+                line += text[i];
+            ++i;
+            continue;
+        }
+        const std::size_t n = utf8Length(text, i);
+        const bool keep = n > 0 && !breaksLine(text.substr(i, n));
+        for (std::size_t k = 0; k < std::max<std::size_t>(n, 1); ++k)
+            line += keep ? text.substr(i + k, 1) : escaped(static_cast<unsigned char>(text[i + k]));
+        i += std::max<std::size_t>(n, 1);
+    }
+    return line;
+}
 
 int runGuarded(int (*run)(int, char**), int argc, char** argv)
 {
@@ -62,7 +123,7 @@ int runGuarded(int (*run)(int, char**), int argc, char** argv)
     {
         message = command + ": failed: " + e.what();
     }
-    std::cerr << "procsim: " << oneLine(message) << '\n';
+    std::cerr << "procsim: " << messageLine(message) << '\n';
     return 1;
 }
 
