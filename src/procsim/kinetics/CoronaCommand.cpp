@@ -58,8 +58,15 @@ std::string num(double v)
     return formatNumber(v);
 }
 
+// One operating point evaluated: its CSV row and the line printed for it.
+struct Point
+{
+    std::vector<std::string> row;
+    std::string line;
+};
+
 // Toluene paper eqs 1-2: the field at wire and anode, N and the area-mean E/N.
-std::vector<std::string> meanEn(const YamlInput& it, std::size_t i)
+Point meanEn(const YamlInput& it, std::size_t i)
 {
     it.rejectUnknown(
         {"label", "voltage_kV", "wire_diameter_mm", "anode_diameter_mm", "temperature_C", "pressure_kPa"});
@@ -71,41 +78,38 @@ std::vector<std::string> meanEn(const YamlInput& it, std::size_t i)
     const double p = it.within("pressure_kPa", 1e-3, 1e6, "kPa") * 1e3;
     const double n = numberDensity(p, tK);
     const double en = meanEOverN(v, r, r0, n) / townsend;
-    fmt::print("  {}: <E/N> = {} Td (N = {} 1/m3)\n", label(it, i), num(en), num(n));
-    return {label(it, i),
-            num(v / 1e3),
-            num(2e3 * r0),
-            num(2e3 * r),
-            num(tK - 273.15),
-            num(p / 1e3),
-            num(field(v, r0, r, r0) / 1e5),
-            num(field(v, r, r, r0) / 1e5),
-            num(n),
-            num(en)};
+    return {{label(it, i), num(v / 1e3), num(2e3 * r0), num(2e3 * r), num(tK - 273.15), num(p / 1e3),
+             num(field(v, r0, r, r0) / 1e5), num(field(v, r, r, r0) / 1e5), num(n), num(en)},
+            fmt::format("  {}: <E/N> = {} Td (N = {} 1/m3)\n", label(it, i), num(en), num(n))};
 }
 
 // Acetaldehyde paper eqs 1-2: psi and the residence-time corrected psi'.
-std::vector<std::string> removal(const YamlInput& it, std::size_t i)
+Point removal(const YamlInput& it, std::size_t i)
 {
     it.rejectUnknown({"label", "outlet_ppm_no_discharge", "outlet_ppm_discharge", "temperature_C",
                       "reference_temperature_C"});
     const double c0 = it.within("outlet_ppm_no_discharge", 1e-12, 1e6, "ppm");
     const double c = it.within("outlet_ppm_discharge", 0, 1e6, "ppm");
+    if (c > c0)
+        throw it.error("outlet_ppm_discharge",
+                       "a concentration up to outlet_ppm_no_discharge " + num(c0) + " [ppm]");
     const double tK = kelvin(it, "temperature_C");
     const double tRef = it.has("reference_temperature_C") ? kelvin(it, "reference_temperature_C") : 298.15;
     const double psi = removalEfficiency(c0, c);
     const double psiP = residenceCorrected(psi, tK, tRef);
-    fmt::print("  {}: psi = {}, psi' = {}\n", label(it, i), num(psi), num(psiP));
-    return {label(it, i), num(c0), num(c), num(tK - 273.15), num(tRef - 273.15), num(psi), num(psiP)};
+    return {{label(it, i), num(c0), num(c), num(tK - 273.15), num(tRef - 273.15), num(psi), num(psiP)},
+            fmt::format("  {}: psi = {}, psi' = {}\n", label(it, i), num(psi), num(psiP))};
 }
 
 // Toluene paper eq 4: J = (q_in - q_out) / (I V) from molar flows.
-std::vector<std::string> energetic(const YamlInput& it, std::size_t i)
+Point energetic(const YamlInput& it, std::size_t i)
 {
     it.rejectUnknown({"label", "inlet_ppm", "outlet_ppm", "gas_flow_m3_per_s", "temperature_C",
                       "pressure_kPa", "current_mA", "voltage_kV"});
     const double cin = it.within("inlet_ppm", 0, 1e6, "ppm");
     const double cout = it.within("outlet_ppm", 0, 1e6, "ppm");
+    if (cout > cin)
+        throw it.error("outlet_ppm", "an outlet concentration up to inlet_ppm " + num(cin) + " [ppm]");
     const double q = it.within("gas_flow_m3_per_s", 1e-12, 1e6, "m3/s");
     const double tK = kelvin(it, "temperature_C");
     const double p = it.within("pressure_kPa", 1e-3, 1e6, "kPa") * 1e3;
@@ -114,27 +118,40 @@ std::vector<std::string> energetic(const YamlInput& it, std::size_t i)
     const double molar = p * q / (gasConstant * tK);
     const double qin = molar * cin * 1e-6, qout = molar * cout * 1e-6;
     const double j = energeticEfficiency(qin, qout, mA * 1e-3, kV * 1e3);
-    fmt::print("  {}: J = {} mol/J\n", label(it, i), num(j));
-    return {label(it, i), num(cin), num(cout), num(qin), num(qout), num(mA), num(kV), num(j)};
+    return {{label(it, i), num(cin), num(cout), num(qin), num(qout), num(mA), num(kV), num(j)},
+            fmt::format("  {}: J = {} mol/J\n", label(it, i), num(j))};
 }
 
-// One optional section of the input: every item evaluated, printed and written.
+// One optional section of the input: every item evaluated, then printed and written.
 struct Section
 {
     const char* key;
     const char* heading;
     const char* file;
     std::vector<std::string> header;
-    std::vector<std::string> (*evaluate)(const YamlInput&, std::size_t);
+    Point (*evaluate)(const YamlInput&, std::size_t);
 };
 
-void runSection(const YamlInput& in, const Section& s, const std::string& dir)
+// Every point of a section that is there, checked before anything is written.
+std::vector<Point> evaluateSection(const YamlInput& in, const Section& s)
 {
-    if (!in.has(s.key)) return;
+    if (!in.has(s.key)) return {};
+    const auto items = in.child(s.key).items();
+    if (items.empty()) throw in.error(s.key, "a non-empty list of operating points");
+    std::vector<Point> points;
+    for (std::size_t i = 0; i < items.size(); ++i) points.push_back(s.evaluate(items[i], i));
+    return points;
+}
+
+void writeSection(const Section& s, const std::vector<Point>& points, const std::string& dir)
+{
     CsvWriter csv(dir + "/" + s.file, s.header);
     fmt::print("{}\n", s.heading);
-    const auto items = in.child(s.key).items();
-    for (std::size_t i = 0; i < items.size(); ++i) csv.row(s.evaluate(items[i], i));
+    for (const auto& p : points)
+    {
+        fmt::print("{}", p.line);
+        csv.row(p.row);
+    }
     csv.close();
 }
 
@@ -167,10 +184,16 @@ int coronaCommand(int argc, char** argv)
     if (!args) return 0;
     const YamlInput in = YamlInput::load(args->file);
     in.rejectUnknown({"title", "mean_en", "removal", "energetic"});
+    std::vector<std::vector<Point>> points;
+    for (const auto& s : sections) points.push_back(evaluateSection(in, s));
+    if (!in.has("mean_en") && !in.has("removal") && !in.has("energetic"))
+        throw InputError(args->file
+                         + ": no section to evaluate (expected one or more of: mean_en, removal, energetic)");
     const std::string dir =
         args->output.empty() ? std::filesystem::path(args->file).stem().string() + "_out" : args->output;
     createOutputDirectory(dir);
-    for (const auto& s : sections) runSection(in, s, dir);
+    for (std::size_t k = 0; k < sections.size(); ++k)
+        if (!points[k].empty()) writeSection(sections[k], points[k], dir);
     fmt::print("  output: {}/\n", dir);
     return 0;
 }
