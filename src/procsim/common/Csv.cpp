@@ -254,6 +254,7 @@ CsvTable readCsv(const std::string& path, bool allowMissing)
             row.push_back(*v);
         }
         table.rows.push_back(row);
+        table.lines.push_back(lineNo);
     }
     return table;
 }

@@ -85,6 +85,7 @@ struct CsvTable
 {
     std::vector<std::string> header;
     std::vector<std::vector<double>> rows;
+    std::vector<std::size_t> lines; // file line of each row, for messages
     std::size_t column(const std::string& name, const std::string& file) const; // throws InputError
 };
 CsvTable readCsv(const std::string& path, bool allowMissing = false);

@@ -8,6 +8,7 @@
 #include <set>
 
 #include "common/Ceres.hpp"
+#include "common/Checked.hpp"
 #include "common/Csv.hpp"
 #include "common/YamlInput.hpp"
 #include "kinetics/Run.hpp"
@@ -216,10 +217,13 @@ std::vector<FitParameter> readParameters(const YamlInput& in)
         p.initial = it.positive("initial");
         params.push_back(p);
     }
+    // after the aliases: I and corona.current_mA are one parameter
+    rejectDuplicates(params, &FitParameter::key, in.file() + ": key 'parameters'", "parameter");
     return params;
 }
 
-// The CSV's measured columns, <species>_mg_per_L or TOC_mgC_per_L, into d.
+// The CSV's measured columns, <species>_mg_per_L or TOC_mgC_per_L, into d;
+// each holds at least one measurement.
 void readMeasured(FitDataset& d, const CsvTable& table, std::size_t timeColumn, const Case& c,
                   const std::string& csvFile)
 {
@@ -241,24 +245,55 @@ void readMeasured(FitDataset& d, const CsvTable& table, std::size_t timeColumn, 
         {
             const double x = table.rows[r][col];
             if (!std::isnan(x) && !(std::fabs(x) <= maxConcentration)) // noise may dip below 0
-                throw InputError(csvFile + ": data row " + std::to_string(r + 1) + ": column '" + h
+                throw InputError(csvFile + ": line " + std::to_string(table.lines[r]) + ": column '" + h
                                  + "' expected a concentration from -" + num(maxConcentration) + " to "
                                  + num(maxConcentration) + " mg/L (or nan: not measured), got " + num(x));
             v.push_back(x);
         }
+        if (std::all_of(v.begin(), v.end(), [](double x) { return std::isnan(x); }))
+            throw InputError(csvFile + ": column '" + h
+                             + "' expected at least one measured value, got only nan (not measured)");
         d.measured.push_back(v);
     }
+    if (d.quantities.empty()) throw InputError(csvFile + ": no measured columns");
+}
+
+// The CSV's measurement times: within the run, each after the one before.
+void readTimes(FitDataset& d, const CsvTable& table, std::size_t timeColumn, const Case& c,
+               const std::string& csvFile)
+{
     const double tMax = c.duration / 3600.0;
     for (std::size_t r = 0; r < table.rows.size(); ++r)
     {
         const double t = table.rows[r][timeColumn];
+        const std::string where = csvFile + ": line " + std::to_string(table.lines[r]) + ": column 'time_h'";
         if (!(t >= 0 && t <= tMax))
-            throw InputError(csvFile + ": data row " + std::to_string(r + 1)
-                             + ": column 'time_h' expected a time from 0 to " + num(tMax)
+            throw InputError(where + " expected a time from 0 to " + num(tMax)
                              + " h (the case's duration), got " + num(t));
+        if (r > 0 && !(t * 3600.0 > d.t.back()))
+            throw InputError(where + " expected times in increasing order, got " + num(t) + " after "
+                             + num(d.t.back() / 3600.0));
         d.t.push_back(t * 3600.0);
     }
-    if (d.quantities.empty()) throw InputError(csvFile + ": no measured columns");
+}
+
+// An experiment's fixed inputs ('set'): each key once (after the aliases)
+// and none of them a parameter the fit estimates.
+Overrides readFixedInputs(const YamlInput& s, const std::vector<FitParameter>& params)
+{
+    Overrides set;
+    std::vector<std::string> keys;
+    for (const auto& k : s.keys())
+    {
+        keys.push_back(expandAlias(k));
+        for (const auto& p : params)
+            if (p.key == keys.back())
+                throw InputError(s.file() + ": key '" + s.path() + "." + k + "' fixes parameter '" + p.key
+                                 + "', which the fit estimates (expected only inputs the fit leaves alone)");
+        set.emplace_back(keys.back(), s.number(k));
+    }
+    rejectDuplicates(keys, s.file() + ": key '" + s.path() + "'", "input");
+    return set;
 }
 
 // One experiment: its case, fixed inputs, measurements and their sigma.
@@ -273,16 +308,15 @@ FitDataset readDataset(const YamlInput& it, std::size_t index, const std::filesy
     FitDataset d;
     d.name = it.text("name", "dataset " + std::to_string(index + 1));
     d.source = CaseSource::load(rel(it.text("case")));
-    if (it.has("set"))
-    {
-        const YamlInput s = it.child("set");
-        for (const auto& k : s.keys()) d.set.emplace_back(expandAlias(k), s.number(k));
-    }
+    if (it.has("set")) d.set = readFixedInputs(it.child("set"), params);
     if (it.has("sigma_mg_per_L")) d.sigma = it.positive("sigma_mg_per_L", "mg/L");
     const std::string csvFile = rel(it.text("csv"));
     const CsvTable table = readCsv(csvFile, true); // "nan" or empty: not measured
-    const Case c = d.source.build(d.set);          // validates the set keys
+    if (table.rows.empty())
+        throw InputError(csvFile + ": no data rows under the header (expected one row per measurement time)");
+    const Case c = d.source.build(d.set); // validates the set keys
     readMeasured(d, table, table.column("time_h", csvFile), c, csvFile);
+    readTimes(d, table, table.column("time_h", csvFile), c, csvFile);
     Overrides o = d.set;
     for (const auto& p : params) o.emplace_back(p.key, p.initial);
     d.source.build(o); // the parameter keys exist
@@ -314,6 +348,7 @@ FitProblem readFitProblem(const std::string& file)
     const std::filesystem::path base = std::filesystem::path(file).parent_path();
     for (const auto& it : in.child("data").items())
         f.data.push_back(readDataset(it, f.data.size(), base, f.parameters));
+    rejectDuplicates(f.data, &FitDataset::name, file + ": key 'data'", "dataset name");
     f.options = readOptions(in);
     return f;
 }
