@@ -231,6 +231,22 @@ std::vector<double> YamlInput::numbers(const std::string& key, const std::string
     return out;
 }
 
+std::vector<double> YamlInput::increasingNumbers(const std::string& key, const std::string& unit) const
+{
+    const std::vector<double> v = numbers(key, unit);
+    if (v.empty()) throw error(key, withUnit("a non-empty list of numbers", unit));
+    for (std::size_t i = 1; i < v.size(); ++i)
+    {
+        if (!(v[i] > v[i - 1]))
+        {
+            throw InputError(file_ + ": key '" + keyPath(key) + "[" + std::to_string(i) + "]' expected "
+                             + withUnit("values in increasing order", unit) + ", got " + formatNumber(v[i])
+                             + " after " + formatNumber(v[i - 1]));
+        }
+    }
+    return v;
+}
+
 void YamlInput::rejectUnknown(const std::vector<std::string>& known) const
 {
     for (const auto& k : keys())

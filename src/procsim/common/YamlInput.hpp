@@ -45,6 +45,9 @@ public:
     std::string text(const std::string& key) const;
     std::string text(const std::string& key, const std::string& fallback) const;
     std::vector<double> numbers(const std::string& key, const std::string& unit = "") const;
+    // A non-empty list of numbers, each above the one before it (a grid, a
+    // series of times): an empty list, a value given twice or out of order is refused.
+    std::vector<double> increasingNumbers(const std::string& key, const std::string& unit = "") const;
 
     // "file: key 'path.key' expected <what>, got '<value>'"
     InputError error(const std::string& key, const std::string& expected) const;

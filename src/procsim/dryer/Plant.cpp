@@ -182,8 +182,7 @@ void readProfile(const YamlInput& pr, Plant& p)
         h.rejectUnknown({"parameter", "values"});
         ProfileAxis axis;
         axis.name = knownParameter(p, h);
-        axis.values = h.numbers("values");
-        if (axis.values.empty()) throw h.error("values", "a non-empty list of values");
+        axis.values = h.increasingNumbers("values");
         for (double v : axis.values) checkParameterValue(h, "values", axis.name, v);
         for (const auto& other : p.profile)
             if (other.name == axis.name) throw h.error("parameter", "each parameter held once");
@@ -300,7 +299,8 @@ void readCalibration(const YamlInput& c, Plant& p)
 }
 
 // The what-if grid: one batch and venting, hot-air set-points above the
-// ambient and up to 150 degC, vented fractions from 0 to 1.
+// ambient and up to 150 degC, vented fractions from 0 to 1, each list
+// non-empty and increasing.
 void readWhatif(const YamlInput& w, Plant& p)
 {
     w.rejectUnknown({"batch", "venting", "hot_air_temperatures_C", "vented_fractions"});
@@ -309,11 +309,11 @@ void readWhatif(const YamlInput& w, Plant& p)
     p.whatifVenting = w.text("venting");
     if (!p.venting.count(p.whatifVenting))
         throw w.error("venting", "the name of an arrangement under 'venting'");
-    p.whatifTemperatures = w.numbers("hot_air_temperatures_C", "degC");
+    p.whatifTemperatures = w.increasingNumbers("hot_air_temperatures_C", "degC");
     for (double t : p.whatifTemperatures)
         if (!(t > p.base.ambientC && t <= 150))
             throw w.error("hot_air_temperatures_C", "set-points above ambient and <= 150 degC");
-    p.whatifVentedFractions = w.numbers("vented_fractions");
+    p.whatifVentedFractions = w.increasingNumbers("vented_fractions");
     for (double f : p.whatifVentedFractions)
         if (!(f >= 0 && f <= 1)) throw w.error("vented_fractions", "fractions from 0 to 1");
 }

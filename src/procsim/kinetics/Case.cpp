@@ -319,7 +319,7 @@ void readReport(const YamlInput& in, Case& c)
     const YamlInput rep = in.child("report");
     rep.rejectUnknown({"times_h", "plot_species"});
     if (rep.has("times_h"))
-        for (double t : rep.numbers("times_h", "h"))
+        for (double t : rep.increasingNumbers("times_h", "h"))
         {
             if (t < 0 || t * 3600.0 > c.duration * (1 + 1e-12))
                 throw rep.error("times_h", "times within the run [h]");

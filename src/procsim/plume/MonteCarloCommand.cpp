@@ -100,8 +100,12 @@ void readSampling(const YamlInput& in, const MonteCarloArgs& a, MonteCarloCase& 
     if (a.seed) c.seed = static_cast<unsigned long long>(*a.seed);
     if (in.has("thresholds_ug_m3"))
     {
-        c.thresholds = in.numbers("thresholds_ug_m3", "ug/m3");
-        if (c.thresholds.empty()) throw in.error("thresholds_ug_m3", "a list of concentrations [ug/m3]");
+        // one column of summary.csv each: increasing, none twice, all above 0
+        c.thresholds = in.increasingNumbers("thresholds_ug_m3", "ug/m3");
+        if (!(c.thresholds.front() > 0))
+            throw InputError(in.file()
+                             + ": key 'thresholds_ug_m3[0]' expected a concentration above 0 [ug/m3], got "
+                             + formatNumber(c.thresholds.front()));
     }
 }
 
