@@ -1,5 +1,6 @@
 #include "common/Csv.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -209,6 +210,18 @@ std::size_t CsvTable::column(const std::string& name, const std::string& file) c
     throw InputError(file + ": column '" + name + "' is missing");
 }
 
+void CsvTable::rejectUnknownColumns(const std::vector<std::string>& known, const std::string& file) const
+{
+    for (const auto& name : header)
+    {
+        if (std::find(known.begin(), known.end(), name) != known.end()) continue;
+        std::string list;
+        for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
+        throw InputError(file + ": line " + std::to_string(headerLine) + ": unknown column '" + name
+                         + "' (expected one of: " + list + ")");
+    }
+}
+
 CsvTable readCsv(const std::string& path, bool allowMissing)
 {
     std::ifstream in = openInput(path, "a CSV file");
@@ -230,6 +243,7 @@ CsvTable readCsv(const std::string& path, bool allowMissing)
         {
             rejectDuplicates(cells, where, "column");
             table.header = cells;
+            table.headerLine = lineNo;
             continue;
         }
         if (cells.size() != table.header.size())

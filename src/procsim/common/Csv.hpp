@@ -85,8 +85,11 @@ struct CsvTable
 {
     std::vector<std::string> header;
     std::vector<std::vector<double>> rows;
+    std::size_t headerLine = 0;     // file line (from 1) of the header
     std::vector<std::size_t> lines; // file line of each row, for messages
     std::size_t column(const std::string& name, const std::string& file) const; // throws InputError
+    // A column not in `known` -> InputError naming the first one and the header's line.
+    void rejectUnknownColumns(const std::vector<std::string>& known, const std::string& file) const;
 };
 CsvTable readCsv(const std::string& path, bool allowMissing = false);
 

@@ -222,12 +222,18 @@ BatchFile readCsvFile(const std::string& path)
             if (t.header[i] == name) return static_cast<long>(i);
         return -1;
     };
-    for (const char* required :
-         {"batch", "hot_air_temperature_C", "ambient_temperature_C", "initial_moisture_percent_db",
-          "final_moisture_percent_db", "drying_time_h", "electricity_kWh"})
-    {
-        t.column(required, path); // throws with the column name if missing
-    }
+    const std::vector<std::string> required = {"batch",
+                                               "hot_air_temperature_C",
+                                               "ambient_temperature_C",
+                                               "initial_moisture_percent_db",
+                                               "final_moisture_percent_db",
+                                               "drying_time_h",
+                                               "electricity_kWh"};
+    std::vector<std::string> known = required;
+    known.insert(known.end(), {"evaporation_rate_kg_per_h", "dry_mass_kg", "evaporated_water_kg",
+                               "paper_energy_efficiency_percent", "paper_specific_energy_kJ_per_kg"});
+    t.rejectUnknownColumns(known, path);                    // a misspelt optional column would be ignored
+    for (const auto& name : required) t.column(name, path); // throws with the column name if missing
     BatchFile f;
     std::size_t line = 0;
     for (const auto& row : t.rows)

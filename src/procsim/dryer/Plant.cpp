@@ -137,6 +137,16 @@ Venting readVenting(const YamlInput& v)
     return out;
 }
 
+// Two parameter names for one model quantity: the same name, or
+// vented_fraction_all and the vented fraction of one arrangement.
+bool sameQuantity(const std::string& a, const std::string& b)
+{
+    const auto oneVent = [](const std::string& n) {
+        return n.rfind("venting.", 0) == 0 && n.size() > 16 && n.substr(n.size() - 16) == ".vented_fraction";
+    };
+    return a == b || (a == "vented_fraction_all" && oneVent(b)) || (b == "vented_fraction_all" && oneVent(a));
+}
+
 // The parameter named under 'parameter', checked against the plant.
 std::string knownParameter(const Plant& p, const YamlInput& f)
 {
@@ -185,7 +195,7 @@ void readProfile(const YamlInput& pr, Plant& p)
         axis.values = h.increasingNumbers("values");
         for (double v : axis.values) checkParameterValue(h, "values", axis.name, v);
         for (const auto& other : p.profile)
-            if (other.name == axis.name) throw h.error("parameter", "each parameter held once");
+            if (sameQuantity(other.name, axis.name)) throw h.error("parameter", "each parameter held once");
         p.profile.push_back(axis);
     }
     if (p.profile.empty()) throw pr.error("hold", "a non-empty list of {parameter, values}");
@@ -270,7 +280,21 @@ void readBatches(const YamlInput& in, Plant& p)
     rejectDuplicates(p.batches, &BatchSpec::id, in.file() + ": key 'batches'", "batch id");
 }
 
-// What calibration fits (each parameter within its bounds), on which
+// Batch ids listed under calibration.<key>, each once.
+std::vector<std::string> readBatchIds(const YamlInput& c, const std::string& key)
+{
+    std::vector<std::string> ids;
+    for (const YamlInput& id : c.child(key).items())
+    {
+        if (!id.node().IsScalar())
+            throw InputError(c.file() + ": key '" + id.path() + "' expected a batch id");
+        ids.push_back(id.node().as<std::string>());
+    }
+    rejectDuplicates(ids, c.file() + ": key '" + c.path() + "." + key + "'", "batch id");
+    return ids;
+}
+
+// What calibration fits (each parameter once, within its bounds), on which
 // batches, and which batches it predicts with which venting.
 void readCalibration(const YamlInput& c, Plant& p)
 {
@@ -280,6 +304,8 @@ void readCalibration(const YamlInput& c, Plant& p)
         f.rejectUnknown({"parameter", "lower", "upper"});
         FitParameter fp;
         fp.name = knownParameter(p, f);
+        for (const auto& other : p.fit)
+            if (sameQuantity(other.name, fp.name)) throw f.error("parameter", "each parameter fitted once");
         fp.lower = f.number("lower");
         fp.upper = f.number("upper");
         checkParameterValue(f, "lower", fp.name, fp.lower);
@@ -287,9 +313,8 @@ void readCalibration(const YamlInput& c, Plant& p)
         if (!(fp.lower < fp.upper)) throw f.error("upper", "a value above 'lower'");
         p.fit.push_back(fp);
     }
-    for (const YamlInput& id : c.child("calibrate_on").items())
-        p.calibrateOn.push_back(id.node().as<std::string>());
-    for (const YamlInput& id : c.child("predict").items()) p.predict.push_back(id.node().as<std::string>());
+    p.calibrateOn = readBatchIds(c, "calibrate_on");
+    p.predict = readBatchIds(c, "predict");
     p.predictVenting = c.text("predict_venting");
     if (!p.venting.count(p.predictVenting))
         throw c.error("predict_venting", "the name of an arrangement under 'venting'");

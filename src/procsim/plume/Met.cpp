@@ -24,6 +24,10 @@ bool hasColumn(const CsvTable& t, const std::string& name)
 MetSeries readMet(const std::string& path, bool full)
 {
     const CsvTable t = readCsv(path);
+    // a misspelt optional column (stability) would be ignored
+    t.rejectUnknownColumns({"hour", "wind_speed_m_s", "wind_direction_deg", "temperature_C",
+                            "mixing_height_m", "cloud_cover_oktas", "stability"},
+                           path);
     if (t.rows.empty()) throw InputError(path + ": no meteorology rows (expected one row per hour)");
     const std::size_t ch = t.column("hour", path);
     const std::size_t cs = t.column("wind_speed_m_s", path);
