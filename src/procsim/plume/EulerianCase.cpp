@@ -128,12 +128,31 @@ void readOutput(const YamlInput& in, EulerianCase& c)
     if (o.has("standard_24h_ug_m3")) c.standardUgM3 = o.positive("standard_24h_ug_m3", "ug/m3");
 }
 
+// The days of the measured series: whole days from 1, each after the one before.
+void checkMeasuredDays(const CsvTable& t, std::size_t cd, const std::string& path)
+{
+    constexpr double maxDay = 1e6;
+    for (std::size_t r = 0; r < t.rows.size(); ++r)
+    {
+        const double day = t.rows[r][cd];
+        const std::string where = path + ": line " + std::to_string(t.lines[r]) + ": column 'day'";
+        if (!(day >= 1 && day <= maxDay && day == std::floor(day)))
+            throw InputError(where + " expected a whole day from 1 to " + formatNumber(maxDay) + ", got "
+                             + formatNumber(day));
+        if (r > 0 && !(day > t.rows[r - 1][cd]))
+            throw InputError(where + " expected days in increasing order, got " + formatNumber(day)
+                             + " after " + formatNumber(t.rows[r - 1][cd]));
+    }
+}
+
 // output.measured_24h: a CSV of day and one column "<receptor> [ug/m3]" per
 // measured receptor; negative values are days without a measurement.
 void readMeasured(const std::string& path, EulerianCase& c)
 {
     const CsvTable t = readCsv(path);
+    if (t.rows.empty()) throw InputError(path + ": no data rows under the header (expected one row per day)");
     const std::size_t cd = t.column("day", path);
+    checkMeasuredDays(t, cd, path);
     for (std::size_t col = 0; col < t.header.size(); ++col)
     {
         if (col == cd) continue;
