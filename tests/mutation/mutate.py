@@ -126,12 +126,13 @@ FAULTS = [
                 scaled_number(1.05), count=2)],
           ["re:^kinetics\\."], "PH + OH -> CC 5 % fast in the shipped mechanisms"),
     Fault("p_sat x 1.01",
-          [Edit("src/procsim/dryer/Psychrometrics.cpp",
+          [Edit("coupling/Psychrometrics.cpp",
                 r"^double\s+saturationPressure\s*\(\s*double\s+tC\s*\)\s*\n\{",
                 "static double saturationPressureUnbroken(double tC);\n"
                 "double saturationPressure(double tC) { return 1.01 * saturationPressureUnbroken(tC); }\n"
                 "static double saturationPressureUnbroken(double tC)\n{")],
-          ["re:^dryer\\."], "Hyland-Wexler saturation pressure 1 % high, over ice and water"),
+          ["re:^dryer\\.", "re:^unit\\.Psychrometrics\\."],
+          "Hyland-Wexler saturation pressure 1 % high, over ice and water"),
     Fault("QUICK -> upwind",
           [Edit("src/procsim/plume/Eulerian.cpp",
                 r"if\s*\(\s*s\s*==\s*Advection::Upwind\s*\)\s*return\s+cc\s*;",

@@ -8,10 +8,12 @@
 #include "common/Cli.hpp"
 #include "common/Csv.hpp"
 #include "common/YamlInput.hpp"
-#include "dryer/Psychrometrics.hpp"
+#include "Psychrometrics.hpp" // coupling/: the one psychrometrics of the project
 
 namespace procsim::dryer
 {
+
+namespace psy = spoutlab::psy;
 
 double LatentHeatConvention::perKg(double hotAirC, double ambientC) const
 {

@@ -9,10 +9,14 @@
 #include <random>
 #include <stdexcept>
 
-#include "dryer/Psychrometrics.hpp"
+#include "Arrhenius.hpp"      // coupling/: shared with the spouted-bed drying models
+#include "Psychrometrics.hpp" // coupling/: the one psychrometrics of the project
 
 namespace procsim::dryer
 {
+
+namespace psy = spoutlab::psy;
+using spoutlab::arrhenius;
 
 double DryerCase::areaPerTray() const
 {
@@ -195,9 +199,7 @@ struct Loop
             mdot = (ext < 0.0 && x > s.xeq) ? ext : 0.0;
             return;
         }
-        const double k = c.rateConstant
-                         * std::exp(-c.activationEnergy / 8.314462618
-                                    * (1.0 / (tp + 273.15) - 1.0 / (c.referenceC + 273.15)));
+        const double k = arrhenius(c.rateConstant, c.activationEnergy, tp + 273.15, c.referenceC + 273.15);
         const double internal = mDry[i] * k * (x - s.xeq);
         mdot = internal * ext / (internal + ext);
     }

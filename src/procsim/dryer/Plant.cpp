@@ -9,10 +9,12 @@
 #include "common/Csv.hpp"
 #include "common/YamlInput.hpp"
 #include "dryer/Metrics.hpp"
-#include "dryer/Psychrometrics.hpp"
+#include "Psychrometrics.hpp" // coupling/: the one psychrometrics of the project
 
 namespace procsim::dryer
 {
+
+namespace psy = spoutlab::psy;
 
 namespace
 {

@@ -10,11 +10,13 @@
 #include "common/CommandLine.hpp"
 #include "common/Format.hpp"
 #include "dryer/Commands.hpp"
-#include "dryer/Psychrometrics.hpp"
+#include "Psychrometrics.hpp" // coupling/: the one psychrometrics of the project
 #include "dryer/Texts.hpp"
 
 namespace procsim::dryer
 {
+
+namespace psy = spoutlab::psy;
 
 namespace
 {

@@ -9,9 +9,10 @@
 
 #include "dryer/Model.hpp"
 #include "dryer/Plant.hpp"
-#include "dryer/Psychrometrics.hpp"
+#include "Psychrometrics.hpp"
 
 using namespace procsim::dryer;
+namespace psy = spoutlab::psy;
 
 namespace
 {

@@ -1,7 +1,8 @@
 #pragma once
 // Psychrometrics of moist air at a given total pressure, valid for dry-bulb
 // temperatures from -100 to 200 degC (saturation over ice below 0 degC, over
-// liquid water from 0 to 200 degC).
+// liquid water from 0 to 200 degC). The one implementation of the project:
+// procsim's tray dryer and the spouted bed's drying models both use it.
 //
 // Formulation: ASHRAE Handbook - Fundamentals, chapter 1 (Psychrometrics):
 //   saturation pressure     Hyland & Wexler (1983), ASHRAE eqs (5) and (6);
@@ -16,7 +17,7 @@
 //
 // Every inverse (dew point, wet bulb, temperature from enthalpy) is solved by
 // bracketed bisection on a monotone function, so it always converges.
-namespace procsim::dryer::psy
+namespace spoutlab::psy
 {
 
 constexpr double kMolarRatio = 0.621945; // M_water / M_dry air
@@ -58,4 +59,4 @@ double humidityRatioFromWetBulb(double tC, double twb, double p);
 // ideal-gas vapour and liquid enthalpies used above: 2501e3 + (1860 - 4186) t.
 double latentHeat(double tC);
 
-} // namespace procsim::dryer::psy
+} // namespace spoutlab::psy

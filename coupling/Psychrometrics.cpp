@@ -1,11 +1,11 @@
-#include "dryer/Psychrometrics.hpp"
+#include "Psychrometrics.hpp"
 
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <string>
 
-namespace procsim::dryer::psy
+namespace spoutlab::psy
 {
 
 namespace
@@ -172,4 +172,4 @@ double latentHeat(double tC)
     return kHfg0 + (kCpVapour - kCpWater) * tC;
 }
 
-} // namespace procsim::dryer::psy
+} // namespace spoutlab::psy

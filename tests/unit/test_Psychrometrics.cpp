@@ -1,12 +1,13 @@
-// Psychrometrics against published reference values and, for the inverse
-// solvers, against their defining equations over the whole 0..200 degC range.
+// Psychrometrics (coupling/Psychrometrics, shared by procsim's tray dryer and
+// the spouted bed's drying) against published reference values and, for the
+// inverse solvers, against their defining equations over 0..200 degC.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "dryer/Psychrometrics.hpp"
+#include "Psychrometrics.hpp"
 
-namespace psy = procsim::dryer::psy;
+namespace psy = spoutlab::psy;
 
 // Saturation pressure over liquid water: ASHRAE Fundamentals (2017) ch. 1
 // Table 3 / IAPWS steam tables [Pa].
@@ -79,13 +80,21 @@ TEST(Psychrometrics, WetBulbAlwaysConvergesFrom0To200C)
                 const double twb = psy::wetBulb(t, W, p);
                 ASSERT_TRUE(std::isfinite(twb)) << t << " " << rh;
                 EXPECT_LE(twb, t + 1e-9);
-                if (W > 0) EXPECT_GE(twb, psy::dewPoint(W, p) - 1e-9);
+                if (W > 0)
+                {
+                    EXPECT_GE(twb, psy::dewPoint(W, p) - 1e-9);
+                }
                 // (a wet bulb right at 0 degC sits on the ice/water switch of
                 // the formulation, where eq 35 and eq 37 do not meet exactly)
                 if (std::fabs(twb) > 1e-6)
+                {
                     EXPECT_NEAR(psy::humidityRatioFromWetBulb(t, twb, p), W, 1e-9 * (1 + W))
                         << "t " << t << " rh " << rh << " p " << p;
-                if (rh == 1.0) EXPECT_NEAR(twb, t, 1e-6);
+                }
+                if (rh == 1.0)
+                {
+                    EXPECT_NEAR(twb, t, 1e-6);
+                }
                 ++cases;
             }
     EXPECT_GT(cases, 600);
