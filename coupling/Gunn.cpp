@@ -10,15 +10,14 @@ const Registration<HeatTransferModel, Gunn> registeredGunn("Gunn");
 
 Gunn::Gunn(const Parameters&) {}
 
-double Gunn::h(const HeatTransferCell& cell, const GasThermalProperties& gas) const
+double Gunn::nusselt(const HeatTransferCell& cell, double re, double pr) const
 {
     const double eps = cell.voidFraction;
-    const double re = heatTransferReynolds(cell, gas);
-    const double pr3 = std::cbrt(gas.prandtl());
+    const double pr3 = std::cbrt(pr);
     // The first term dominates at low Re, the second at high Re.
     const double lowRe = (7.0 - 10.0 * eps + 5.0 * eps * eps) * (1.0 + 0.7 * std::pow(re, 0.2) * pr3);
     const double highRe = (1.33 - 2.4 * eps + 1.2 * eps * eps) * std::pow(re, 0.7) * pr3;
-    return (lowRe + highRe) * gas.kappa / cell.diameter;
+    return lowRe + highRe;
 }
 
 } // namespace spoutlab

@@ -18,7 +18,7 @@ class Gunn : public HeatTransferModel
 public:
     explicit Gunn(const Parameters& props);
 
-    double h(const HeatTransferCell& cell, const GasThermalProperties& gas) const override;
+    double nusselt(const HeatTransferCell& cell, double re, double pr) const override;
     std::string name() const override { return "Gunn"; }
 };
 

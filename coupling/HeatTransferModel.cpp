@@ -10,6 +10,22 @@ double heatTransferReynolds(const HeatTransferCell& cell, const GasThermalProper
 
 HeatTransferModel::~HeatTransferModel() = default;
 
+// The multiplication and division are those each correlation's h() did before
+// it became nusselt(): the same operations in the same order, so h is the same
+// to the bit (spoutFoam's heat-transfer results do not move).
+double HeatTransferModel::h(const HeatTransferCell& cell, const GasThermalProperties& gas) const
+{
+    return nusselt(cell, heatTransferReynolds(cell, gas), gas.prandtl()) * gas.kappa / cell.diameter;
+}
+
+double HeatTransferModel::massTransferCoefficient(const HeatTransferCell& cell,
+                                                  const GasThermalProperties& gas,
+                                                  double vapourDiffusivity) const
+{
+    const double schmidt = gas.mu / (gas.rho * vapourDiffusivity);
+    return nusselt(cell, heatTransferReynolds(cell, gas), schmidt) * vapourDiffusivity / cell.diameter;
+}
+
 int HeatTransferModel::region(const HeatTransferCell&) const
 {
     return -1;

@@ -9,6 +9,13 @@
 // another in the downcomer). The heat a particle receives is then
 //   q_i = h A_i (T_g - T_i)   (eq 10), and the gas loses the same (eq 5).
 //
+// Each model is its Nusselt correlation Nu(cell, Re, Pr); h follows from it in
+// the base class. The same correlation with the Schmidt number in place of the
+// Prandtl number is the Sherwood number of the mass transfer (the heat and mass
+// transfer analogy), so drying sees the Re and the correlation the heat
+// transfer uses in that cell:
+//   Sc = mu/(rho D_v),   Sh = Nu(cell, Re, Sc),   k_m = Sh D_v / d
+//
 // Run-time selection by name, the couplingProperties entry "heatTransferModel",
 // with settings in "<name>Props".
 
@@ -53,8 +60,19 @@ class HeatTransferModel
 public:
     virtual ~HeatTransferModel();
 
-    // Heat-transfer coefficient h [W m^-2 K^-1] in this cell.
-    virtual double h(const HeatTransferCell& cell, const GasThermalProperties& gas) const = 0;
+    // The correlation: Nu at the cell's Reynolds number and at the Prandtl
+    // number pr, or Sh with the Schmidt number in its place.
+    virtual double nusselt(const HeatTransferCell& cell, double reynolds, double pr) const = 0;
+
+    // Heat-transfer coefficient h = Nu(cell, Re, Pr) k_c/d [W m^-2 K^-1] in
+    // this cell.
+    double h(const HeatTransferCell& cell, const GasThermalProperties& gas) const;
+
+    // Mass-transfer coefficient k_m = Sh D_v/d [m/s] of a vapour of
+    // diffusivity D_v [m^2/s] in this gas, Sh = Nu(cell, Re, Sc) with
+    // Sc = mu/(rho D_v).
+    double massTransferCoefficient(const HeatTransferCell& cell, const GasThermalProperties& gas,
+                                   double vapourDiffusivity) const;
 
     // 1 where the cell counts as spout, 0 where it counts as downcomer, for
     // models that tell the two apart; -1 for a single correlation everywhere.

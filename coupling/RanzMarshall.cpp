@@ -10,11 +10,9 @@ const Registration<HeatTransferModel, RanzMarshall> registeredRanzMarshall("Ranz
 
 RanzMarshall::RanzMarshall(const Parameters&) {}
 
-double RanzMarshall::h(const HeatTransferCell& cell, const GasThermalProperties& gas) const
+double RanzMarshall::nusselt(const HeatTransferCell&, double re, double pr) const
 {
-    const double re = heatTransferReynolds(cell, gas);
-    const double nu = 2.0 + 0.6 * std::cbrt(gas.prandtl()) * std::sqrt(re);
-    return nu * gas.kappa / cell.diameter;
+    return 2.0 + 0.6 * std::cbrt(pr) * std::sqrt(re);
 }
 
 } // namespace spoutlab

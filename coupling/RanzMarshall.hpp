@@ -16,7 +16,7 @@ class RanzMarshall : public HeatTransferModel
 public:
     explicit RanzMarshall(const Parameters& props);
 
-    double h(const HeatTransferCell& cell, const GasThermalProperties& gas) const override;
+    double nusselt(const HeatTransferCell& cell, double re, double pr) const override;
     std::string name() const override { return "RanzMarshall"; }
 };
 

@@ -10,11 +10,9 @@ const Registration<HeatTransferModel, Sartori> registeredSartori("Sartori");
 
 Sartori::Sartori(const Parameters&) {}
 
-double Sartori::h(const HeatTransferCell& cell, const GasThermalProperties& gas) const
+double Sartori::nusselt(const HeatTransferCell&, double re, double pr) const
 {
-    const double re = heatTransferReynolds(cell, gas);
-    const double nu = 1.54 * std::cbrt(gas.prandtl()) * std::pow(re, 0.57);
-    return nu * gas.kappa / cell.diameter;
+    return 1.54 * std::cbrt(pr) * std::pow(re, 0.57);
 }
 
 } // namespace spoutlab

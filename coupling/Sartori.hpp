@@ -18,7 +18,7 @@ class Sartori : public HeatTransferModel
 public:
     explicit Sartori(const Parameters& props);
 
-    double h(const HeatTransferCell& cell, const GasThermalProperties& gas) const override;
+    double nusselt(const HeatTransferCell& cell, double re, double pr) const override;
     std::string name() const override { return "Sartori"; }
 };
 

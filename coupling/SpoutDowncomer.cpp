@@ -66,9 +66,9 @@ int SpoutDowncomer::region(const HeatTransferCell& cell) const
     return inBand || cell.centre.z >= fountainBase_ ? 1 : 0;
 }
 
-double SpoutDowncomer::h(const HeatTransferCell& cell, const GasThermalProperties& gas) const
+double SpoutDowncomer::nusselt(const HeatTransferCell& cell, double re, double pr) const
 {
-    return (region(cell) == 1 ? spout_ : downcomer_)->h(cell, gas);
+    return (region(cell) == 1 ? spout_ : downcomer_)->nusselt(cell, re, pr);
 }
 
 } // namespace spoutlab

@@ -28,7 +28,7 @@ class SpoutDowncomer : public HeatTransferModel
 public:
     explicit SpoutDowncomer(const Parameters& props);
 
-    double h(const HeatTransferCell& cell, const GasThermalProperties& gas) const override;
+    double nusselt(const HeatTransferCell& cell, double re, double pr) const override;
     int region(const HeatTransferCell& cell) const override;
     std::string name() const override { return "spoutDowncomer"; }
 

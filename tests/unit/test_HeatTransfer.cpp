@@ -126,6 +126,76 @@ TEST(Gunn, ZeroSlipLimits)
     expectRel(h("Gunn", cell(0.45, 0.0)), 12.8075, 1e-5);
 }
 
+// --- the correlation as Nu(Re, Pr), and mass transfer ---------------------------
+
+// h must stay the value it was before the correlations became nusselt(): the
+// solver's heat-transfer results depend on it to the bit. Each correlation's
+// published expression, written out here as h() computed it, must agree
+// exactly (EXPECT_EQ, not NEAR) on cells from packed to dilute. The inputs
+// pass through a volatile so that the compiler cannot fold the test's side at
+// compile time, where pow and cbrt are rounded correctly and the library's at
+// run time may differ in the last bit.
+TEST(HeatTransferModel, HIsTheCorrelationsExpressionToTheBit)
+{
+    auto rm = make("RanzMarshall"), sartori = make("Sartori"), gunn = make("Gunn");
+    for (double epsValue : {0.36, 0.45, 0.7, 0.95, 1.0})
+    {
+        for (double slipValue : {0.0, 1e-6, 0.7, 3.0, 15.0})
+        {
+            volatile double opaque[3] = {epsValue, slipValue, air.prandtl()};
+            const double eps = opaque[0];
+            const HeatTransferCell c = cell(eps, opaque[1]);
+            const double re = heatTransferReynolds(c, air), pr = opaque[2];
+            const double nuRm = 2.0 + 0.6 * std::cbrt(pr) * std::sqrt(re);
+            EXPECT_EQ(rm->h(c, air), nuRm * air.kappa / c.diameter);
+            EXPECT_EQ(rm->nusselt(c, re, pr), nuRm);
+            const double nuSartori = 1.54 * std::cbrt(pr) * std::pow(re, 0.57);
+            EXPECT_EQ(sartori->h(c, air), nuSartori * air.kappa / c.diameter);
+            const double pr3 = std::cbrt(pr);
+            const double lowRe = (7.0 - 10.0 * eps + 5.0 * eps * eps) * (1.0 + 0.7 * std::pow(re, 0.2) * pr3);
+            const double highRe = (1.33 - 2.4 * eps + 1.2 * eps * eps) * std::pow(re, 0.7) * pr3;
+            EXPECT_EQ(gunn->h(c, air), (lowRe + highRe) * air.kappa / c.diameter);
+        }
+    }
+}
+
+// Water vapour, D_v = 3.0e-5 m^2/s, in the air above:
+//   Sc = 2.029e-5/(1.0324 3.0e-5) = 0.655108, Sc^(1/3) = 0.868502
+// Ranz-Marshall, spout: Sh = 2 + 0.6 0.868502 76.1615 = 41.6879,
+//   k_m = 41.6879 3.0e-5/8e-3 = 0.156329 m/s
+// Sartori, downcomer: Sh = 1.54 0.868502 15.9053 = 21.2732, k_m = 0.0797745 m/s
+TEST(HeatTransferModel, MassTransferIsTheSherwoodFormByHand)
+{
+    const double dv = 3.0e-5;
+    expectRel(make("RanzMarshall")->massTransferCoefficient(spoutCell, air, dv), 0.156329, 1e-5);
+    expectRel(make("Sartori")->massTransferCoefficient(downcomerCell, air, dv), 0.0797745, 1e-5);
+    // the region rule uses the cell's own correlation for mass as for heat
+    auto rule = make("spoutDowncomer", [] {
+        Parameters p("couplingProperties/spoutDowncomerProps");
+        p.set("region", "voidage").set("spoutVoidage", "0.8");
+        return p;
+    }());
+    expectRel(rule->massTransferCoefficient(spoutCell, air, dv), 0.156329, 1e-5);
+    expectRel(rule->massTransferCoefficient(downcomerCell, air, dv), 0.0797745, 1e-5);
+}
+
+// Lewis number 1: a vapour diffusing as fast as heat (D_v = k_c/(rho c_p),
+// so Sc = Pr) has k_m rho c_p = h, for every correlation and cell.
+TEST(HeatTransferModel, UnitLewisNumberGivesTheChiltonColburnIdentity)
+{
+    const double alpha = air.kappa / (air.rho * air.cp);
+    for (const char* n : {"RanzMarshall", "Sartori", "Gunn"})
+    {
+        auto m = make(n);
+        for (const HeatTransferCell& c : {spoutCell, downcomerCell, cell(0.6, 0.0)})
+        {
+            const double hc = m->h(c, air);
+            EXPECT_NEAR(m->massTransferCoefficient(c, air, alpha) * air.rho * air.cp, hc, 1e-12 * (1.0 + hc))
+                << n;
+        }
+    }
+}
+
 // --- selection ---------------------------------------------------------------------
 
 TEST(HeatTransferModels, SelectedByName)
