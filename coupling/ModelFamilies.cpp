@@ -1,6 +1,7 @@
 #include "ModelFamilies.hpp"
 
 #include "DragModel.hpp"
+#include "DryingModel.hpp"
 #include "HeatTransferModel.hpp"
 #include "VoidFractionModel.hpp"
 
@@ -21,7 +22,8 @@ ModelFamily familyOf()
 
 std::vector<ModelFamily> modelFamilies()
 {
-    return {familyOf<DragModel>(), familyOf<VoidFractionModel>(), familyOf<HeatTransferModel>()};
+    return {familyOf<DragModel>(), familyOf<VoidFractionModel>(), familyOf<HeatTransferModel>(),
+            familyOf<DryingModel>()};
 }
 
 } // namespace spoutlab

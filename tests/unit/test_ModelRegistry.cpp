@@ -132,11 +132,13 @@ TEST(ModelRegistry, ANameRegisteredTwiceIsAProgrammingError)
 TEST(ModelFamilies, EveryFamilyWithItsKeyAndNames)
 {
     const auto families = modelFamilies();
-    ASSERT_EQ(families.size(), 3u);
+    ASSERT_EQ(families.size(), 4u);
     EXPECT_EQ(families[0].key, "dragModel");
     EXPECT_EQ(families[0].names, "Beetstra, DiFelice, Gidaspow");
     EXPECT_EQ(families[1].key, "voidFractionModel");
     EXPECT_EQ(families[1].names, "centre, divided");
     EXPECT_EQ(families[2].key, "heatTransferModel");
     EXPECT_EQ(families[2].names, "Gunn, RanzMarshall, Sartori, spoutDowncomer");
+    EXPECT_EQ(families[3].key, "dryingModel");
+    EXPECT_EQ(families[3].names, "freeWater, kernelDiffusion, reactionEngineering");
 }

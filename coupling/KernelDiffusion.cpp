@@ -1,0 +1,189 @@
+#include "KernelDiffusion.hpp"
+
+#include "Arrhenius.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace spoutlab
+{
+
+// selected by "dryingModel kernelDiffusion;"
+const Registration<DryingModel, KernelDiffusion> registeredKernelDiffusion("kernelDiffusion");
+
+// The surface film over a step, in the units of the shell equations (moisture
+// per unit of the dimensionless time D_eff t/R^2): the flux through the film
+// is kappa (a_w(X_s) rho_v,sat - rho_v,inf), kappa = k_m A R^2/(m_d D_eff).
+struct KernelDiffusion::Surface
+{
+    double kappa;
+    double saturatedVapour; // rho_v,sat(T_p)
+    double farVapour;       // rho_v,inf
+    double temperature;     // T_p
+};
+
+namespace
+{
+
+// Tridiagonal solve (Thomas) of a symmetric matrix with diagonal `diag` and
+// off-diagonal -g[i] between rows i-1 and i; rhs overwritten by the solution.
+void solveTridiagonal(const std::vector<double>& diag, const std::vector<double>& g, std::vector<double>& rhs,
+                      std::vector<double>& work)
+{
+    const std::size_t n = diag.size();
+    work.resize(n);
+    double pivot = diag[0];
+    rhs[0] /= pivot;
+    for (std::size_t i = 1; i < n; ++i)
+    {
+        work[i] = -g[i] / pivot;
+        pivot = diag[i] + g[i] * work[i];
+        rhs[i] = (rhs[i] + g[i] * rhs[i - 1]) / pivot;
+    }
+    for (std::size_t i = n - 1; i-- > 0;) rhs[i] -= work[i + 1] * rhs[i + 1];
+}
+
+long requireShells(const Parameters& props)
+{
+    const long n = props.getInteger("nShells", 15);
+    if (n < 2 || n > 200) throw props.badValue("nShells", "a number of shells from 2 to 200");
+    return n;
+}
+
+} // namespace
+
+KernelDiffusion::KernelDiffusion(const Parameters& props)
+    : DryingModel(isothermOf(props)), d0_(props.getScalar("D0")),
+      activationEnergy_(props.getScalar("activationEnergy"))
+{
+    if (!(d0_ > 0.0)) throw props.badValue("D0", "a diffusivity > 0 in m^2/s");
+    if (!(activationEnergy_ >= 0.0)) throw props.badValue("activationEnergy", "an energy >= 0 in J/mol");
+    const long n = requireShells(props);
+    // faces s_i = r_i/R, volume fractions and volume centroids of the shells
+    std::vector<double> face(n + 1), centroid(n);
+    for (long i = 0; i <= n; ++i)
+    {
+        const double u = 1.0 - static_cast<double>(i) / n;
+        face[i] = 1.0 - u * u;
+    }
+    weights_.resize(n);
+    for (long i = 0; i < n; ++i)
+    {
+        const double a = face[i], b = face[i + 1];
+        weights_[i] = b * b * b - a * a * a;
+        centroid[i] = 0.75 * (b * b * b * b - a * a * a * a) / weights_[i];
+    }
+    // flux 4 pi r^2 D rho_d dX/dr in units of m_d D/R^2: 3 s_f^2 / (distance of the nodes)
+    conductance_.assign(n + 1, 0.0);
+    for (long f = 1; f < n; ++f) conductance_[f] = 3.0 * face[f] * face[f] / (centroid[f] - centroid[f - 1]);
+    conductance_[n] = 3.0 / (1.0 - centroid[n - 1]);
+}
+
+double KernelDiffusion::diffusivity(double temperature) const
+{
+    // D_0 exp(-E_a/(R T)): the Arrhenius law about an infinite reference temperature
+    return arrhenius(d0_, activationEnergy_, temperature, std::numeric_limits<double>::infinity());
+}
+
+void KernelDiffusion::initialise(double moisture, double* state) const
+{
+    std::fill(state, state + stateSize(), moisture);
+}
+
+// X_s with the outer shell at P + Q j and j = g_s (Y_N-1 - X_s): eliminating
+// Y_N-1 gives j = G (P - X_s), G = g_s/(1 - g_s Q) (Q <= 0), and the film
+// condition kappa (a_w(X_s) rho_sat - rho_inf) = G (P - X_s), which rises with
+// X_s: one root, in [0, P + kappa rho_inf/G].
+double KernelDiffusion::surfaceMoisture(const Surface& s, double p, double q, double guess) const
+{
+    const double gs = conductance_.back();
+    const double g = gs / (1.0 - gs * q);
+    const SorptionIsotherm& iso = isotherm();
+    auto film = [&](double x) {
+        return s.kappa * (iso.waterActivity(x, s.temperature) * s.saturatedVapour - s.farVapour)
+               - g * (p - x);
+    };
+    auto slope = [&](double x) {
+        return s.kappa * s.saturatedVapour * iso.waterActivityDerivative(x, s.temperature) + g;
+    };
+    if (s.kappa == 0.0) return p; // no film: no flux, X_s = the outer shell's
+    const double hi = p + s.kappa * s.farVapour / g;
+    if (!(hi > 0.0) || film(0.0) >= 0.0) return 0.0; // a bone-dry surface: the water limits the flux
+    return increasingRoot(film, slope, 0.0, hi, guess);
+}
+
+// One backward-Euler step of D_eff dt/R^2 = dTau; returns X_s.
+double KernelDiffusion::subStep(const Surface& s, double* shells, double dTau, double surfaceGuess) const
+{
+    const std::size_t n = weights_.size();
+    // scratch reused from call to call (a particle's step allocates nothing)
+    thread_local std::vector<double> diag, p, q, work;
+    diag.resize(n);
+    p.resize(n);
+    q.assign(n, 0.0);
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        diag[i] = weights_[i] / dTau + conductance_[i] + (i + 1 < n ? conductance_[i + 1] : 0.0);
+        p[i] = weights_[i] / dTau * shells[i];
+    }
+    q[n - 1] = -1.0;
+    solveTridiagonal(diag, conductance_, p, work); // shells without surface flux
+    solveTridiagonal(diag, conductance_, q, work); // response to a unit surface flux
+    const double surface = surfaceMoisture(s, p[n - 1], q[n - 1], surfaceGuess);
+    const double gs = conductance_.back();
+    const double j = gs / (1.0 - gs * q[n - 1]) * (p[n - 1] - surface);
+    for (std::size_t i = 0; i < n; ++i) shells[i] = p[i] + q[i] * j;
+    return surface;
+}
+
+namespace
+{
+
+KernelDiffusion::Surface surfaceOf(const KernelDiffusion& model, const Kernel& kernel, const MoistAir& air,
+                                   double massTransferCoefficient)
+{
+    const double radius = 0.5 * kernel.diameter;
+    const double d = model.diffusivity(kernel.temperature);
+    return {massTransferCoefficient * surfaceArea(kernel) * radius * radius / (kernel.dryMass * d),
+            saturationVapourDensity(kernel.temperature), vapourDensity(air), kernel.temperature};
+}
+
+} // namespace
+
+double KernelDiffusion::rate(const Kernel& kernel, double, const double* state, const MoistAir& air,
+                             double massTransferCoefficient) const
+{
+    const int n = shells();
+    const Surface s = surfaceOf(*this, kernel, air, massTransferCoefficient);
+    // the outer shell as it is (Q = 0): j = g_s (X_N-1 - X_s)
+    const double surface = surfaceMoisture(s, state[n - 1], 0.0, state[n]);
+    const double j = conductance_.back() * (state[n - 1] - surface);
+    const double radius = 0.5 * kernel.diameter;
+    return j * kernel.dryMass * diffusivity(kernel.temperature) / (radius * radius);
+}
+
+double KernelDiffusion::advance(const Kernel& kernel, double& moisture, double* state, const MoistAir& air,
+                                double massTransferCoefficient, double dt) const
+{
+    checkStep(moisture, massTransferCoefficient, dt);
+    const int n = shells();
+    const double old = moisture;
+    const double radius = 0.5 * kernel.diameter;
+    const double tau = diffusivity(kernel.temperature) * dt / (radius * radius);
+    const Surface s = surfaceOf(*this, kernel, air, massTransferCoefficient);
+    const long steps = static_cast<long>(std::ceil(tau / kMaxStep));
+    for (long k = 0; k < steps; ++k) state[n] = subStep(s, state, tau / steps, state[n]);
+    if (steps == 0) return 0.0;
+    double mean = 0.0;
+    for (int i = 0; i < n; ++i) mean += weights_[i] * state[i];
+    moisture = mean;
+    return kernel.dryMass * (old - moisture);
+}
+
+double KernelDiffusion::latentHeat(const Kernel& kernel, double, const double* state) const
+{
+    return isotherm().latentHeat(state[shells()], kernel.temperature);
+}
+
+} // namespace spoutlab

@@ -1,0 +1,450 @@
+// The drying laws of one kernel: their rates by hand from the published
+// formulas, their limits (no film, saturated air, X at equilibrium), water
+// conserved to round-off, stability from 1e-4 s to a day per step, the wet
+// bulb a free-water kernel settles at, and the kernel-diffusion shells against
+// Crank's series for a sphere at constant surface moisture.
+//
+// A kernel of shelled corn: d = 8 mm, dry mass 2.48e-4 kg (1231 kg/m^3 at
+// X = 0.33), A = pi d^2 = 2.01062e-4 m^2; air at 60 C, W = 0.01, 1 atm. The
+// REA and diffusion parameters below are test values, not a corn fit.
+
+#include "DryingModel.hpp"
+#include "InputError.hpp"
+#include "KernelDiffusion.hpp"
+#include "Psychrometrics.hpp"
+#include "ReactionEngineering.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <string>
+#include <vector>
+
+using namespace spoutlab;
+
+namespace
+{
+
+const double pi = std::acos(-1.0);
+const double rv = 287.042 / 0.621945; // R_v of the psychrometrics
+const double gasConstant = 8.314462618;
+const MoistAir air{333.15, 0.01, 101325.0};
+const double km = 0.05; // m/s
+
+Kernel kernelAt(double temperature)
+{
+    return {8e-3, 2.48e-4, temperature};
+}
+
+// the hand formulas the models must agree with
+double saturated(double temperature)
+{
+    return psy::saturationPressure(temperature - 273.15) / (rv * temperature);
+}
+double farVapour(const MoistAir& a)
+{
+    return a.pressure * a.humidityRatio / (0.621945 + a.humidityRatio) / (rv * a.temperature);
+}
+double airRh(const MoistAir& a)
+{
+    return a.pressure * a.humidityRatio / (0.621945 + a.humidityRatio)
+           / psy::saturationPressure(a.temperature - 273.15);
+}
+double hendersonXeq(double rh, double temperature)
+{
+    return 0.01 * std::pow(-std::log(1.0 - rh) / (8.6541e-5 * (temperature - 273.15 + 49.810)), 1.0 / 1.8634);
+}
+
+Parameters reaProps(const std::string& a = "1", const std::string& b = "5", const std::string& c = "1")
+{
+    Parameters p("constant/couplingProperties/reactionEngineeringProps");
+    p.set("a", a).set("b", b).set("c", c);
+    return p;
+}
+
+Parameters diffusionProps(const std::string& shells = "15")
+{
+    Parameters p("constant/couplingProperties/kernelDiffusionProps");
+    p.set("D0", "5e-6").set("activationEnergy", "30000").set("nShells", shells);
+    return p;
+}
+
+std::unique_ptr<DryingModel> make(const std::string& name, const Parameters& props)
+{
+    return DryingModel::New(name, props);
+}
+
+std::string errorOf(const std::string& name, const Parameters& props)
+{
+    try
+    {
+        make(name, props);
+    }
+    catch (const InputError& e)
+    {
+        return e.what();
+    }
+    return "";
+}
+
+void expectRel(double value, double expected, double tol)
+{
+    EXPECT_LT(std::fabs(value - expected), tol * std::fabs(expected)) << value << " vs " << expected;
+}
+
+} // namespace
+
+// --- selection -----------------------------------------------------------------------
+
+TEST(DryingModels, SelectedByName)
+{
+    EXPECT_EQ(DryingModel::available(),
+              (std::vector<std::string>{"freeWater", "kernelDiffusion", "reactionEngineering"}));
+    EXPECT_EQ(make("freeWater", Parameters("x"))->name(), "freeWater");
+    EXPECT_EQ(make("reactionEngineering", reaProps())->name(), "reactionEngineering");
+    EXPECT_EQ(make("kernelDiffusion", diffusionProps())->name(), "kernelDiffusion");
+}
+
+TEST(DryingModels, BadNamesAndMissingParametersNameTheKey)
+{
+    EXPECT_EQ(errorOf("Lewis", Parameters("constant/couplingProperties/LewisProps")),
+              "constant/couplingProperties: key 'dryingModel' expected one of freeWater, kernelDiffusion, "
+              "reactionEngineering, got 'Lewis'");
+    Parameters noA("constant/couplingProperties/reactionEngineeringProps");
+    noA.set("b", "5").set("c", "1");
+    EXPECT_EQ(errorOf("reactionEngineering", noA),
+              "constant/couplingProperties/reactionEngineeringProps: key 'a' is missing (expected a number)");
+    EXPECT_EQ(
+        errorOf("reactionEngineering", reaProps("1", "5", "0")),
+        "constant/couplingProperties/reactionEngineeringProps: key 'c' expected an exponent > 0, got '0'");
+    Parameters noD0("constant/couplingProperties/kernelDiffusionProps");
+    noD0.set("activationEnergy", "30000");
+    EXPECT_EQ(errorOf("kernelDiffusion", noD0),
+              "constant/couplingProperties/kernelDiffusionProps: key 'D0' is missing (expected a number)");
+    EXPECT_EQ(errorOf("kernelDiffusion", diffusionProps("1")),
+              "constant/couplingProperties/kernelDiffusionProps: key 'nShells' expected a number of shells "
+              "from 2 to 200, got '1'");
+    Parameters badIsotherm = diffusionProps();
+    badIsotherm.set("isotherm", "GAB");
+    EXPECT_EQ(errorOf("kernelDiffusion", badIsotherm),
+              "constant/couplingProperties/kernelDiffusionProps: key 'isotherm' expected one of "
+              "modifiedChungPfost, modifiedHenderson, got 'GAB'");
+}
+
+TEST(DryingModels, AStepOutsideThePreconditionsIsOneLine)
+{
+    auto model = make("freeWater", Parameters("x"));
+    double x = -0.1;
+    EXPECT_THROW(model->advance(kernelAt(300.0), x, nullptr, air, km, 1.0), std::domain_error);
+    x = 0.2;
+    EXPECT_THROW(model->advance(kernelAt(300.0), x, nullptr, air, -km, 1.0), std::domain_error);
+    EXPECT_THROW(model->advance(kernelAt(300.0), x, nullptr, air, km, NAN), std::domain_error);
+}
+
+// --- free water --------------------------------------------------------------------
+
+// m_dot = k_m A (p_ws(T_p)/(R_v T_p) - p_w/(R_v T_g))
+TEST(FreeWater, RateByHand)
+{
+    auto model = make("freeWater", Parameters("x"));
+    const double area = pi * 8e-3 * 8e-3;
+    for (double tp : {290.0, 305.0, 320.0})
+    {
+        const double expected = km * area * (saturated(tp) - farVapour(air));
+        expectRel(model->rate(kernelAt(tp), 0.3, nullptr, air, km), expected, 1e-12);
+    }
+    EXPECT_EQ(model->stateSize(), 0);
+    EXPECT_EQ(model->rate(kernelAt(305.0), 0.3, nullptr, air, 0.0), 0.0); // no film, no transfer
+    EXPECT_EQ(model->rate(kernelAt(305.0), 0.0, nullptr, air, km), 0.0);  // nothing left to evaporate
+    // latent heat: free water's, 2501e3 + (1860 - 4186) 31.85 J/kg
+    expectRel(model->latentHeat(kernelAt(305.0), 0.3, nullptr), 2501e3 - 2326.0 * 31.85, 1e-12);
+}
+
+TEST(FreeWater, AdvanceIsExactConservesAndStopsAtZero)
+{
+    auto model = make("freeWater", Parameters("x"));
+    const Kernel k = kernelAt(305.0);
+    const double mdot = model->rate(k, 0.3, nullptr, air, km);
+    double x = 0.3;
+    const double water = model->advance(k, x, nullptr, air, km, 10.0);
+    EXPECT_NEAR(x, 0.3 - mdot * 10.0 / k.dryMass, 1e-15);
+    EXPECT_EQ(water, k.dryMass * (0.3 - x));
+    // a day: all the water goes, and no more
+    x = 0.3;
+    EXPECT_EQ(model->advance(k, x, nullptr, air, km, 86400.0), k.dryMass * 0.3);
+    EXPECT_EQ(x, 0.0);
+    EXPECT_EQ(model->advance(k, x, nullptr, air, km, 60.0), 0.0);
+    // a cold kernel in humid air: vapour condenses on it
+    const MoistAir humid{333.15, 0.1, 101325.0};
+    x = 0.3;
+    const double condensed = model->advance(kernelAt(290.0), x, nullptr, humid, km, 1.0);
+    EXPECT_LT(condensed, 0.0);
+    EXPECT_GT(x, 0.3);
+}
+
+// A kernel with plenty of water whose temperature follows its heat balance,
+//   m c dT_p/dt = h A (T_g - T_p) - m_dot h_fg(T_p),
+// settles where the two terms balance: the wet bulb of the gas-film laws,
+// solved here by bisection. With k_m rho c_p = h (Lewis number 1, rho and c_p
+// of the moist air) it lies 1.1 K below the psychrometric wet bulb at
+// 60 C / W = 0.01 (27.65 C): the film law drives with vapour densities at T_p
+// and T_g, adiabatic saturation with humidity ratios, and the dry air is
+// denser at the cold surface.
+TEST(FreeWater, SettlesAtTheWetBulb)
+{
+    auto model = make("freeWater", Parameters("x"));
+    const double h = 50.0, area = pi * 8e-3 * 8e-3;
+    const double rho = psy::density(60.0, air.humidityRatio, air.pressure);
+    const double cp = (1006.0 + 1860.0 * air.humidityRatio) / (1.0 + air.humidityRatio);
+    const double kmLewis = h / (rho * cp);
+    auto balance = [&](double tp) {
+        return h * (air.temperature - tp)
+               - kmLewis * psy::latentHeat(tp - 273.15) * (saturated(tp) - farVapour(air));
+    };
+    double lo = 273.2, hi = air.temperature;
+    for (int i = 0; i < 100; ++i) (balance(0.5 * (lo + hi)) > 0.0 ? lo : hi) = 0.5 * (lo + hi);
+    const double wetBulb = 0.5 * (lo + hi);
+
+    Kernel k = kernelAt(300.0);
+    double x = 10.0; // never runs dry here
+    const double dt = 0.5;
+    for (int step = 0; step < 4000; ++step) // 2000 s, about 30 thermal time constants
+    {
+        const double evaporated = model->advance(k, x, nullptr, air, kmLewis, dt);
+        const double heat =
+            h * area * (air.temperature - k.temperature) * dt - evaporated * model->latentHeat(k, x, nullptr);
+        k.temperature += heat / (k.dryMass * (1465.0 + x * 4186.0));
+    }
+    EXPECT_NEAR(k.temperature, wetBulb, 0.01);
+    const double psychrometric = psy::wetBulb(60.0, air.humidityRatio, air.pressure) + 273.15;
+    EXPECT_NEAR(psychrometric, 273.15 + 27.65, 0.01);
+    EXPECT_NEAR(k.temperature - psychrometric, -1.12, 0.05);
+}
+
+// --- reaction engineering approach ---------------------------------------------------
+
+// rho_v,s = exp(-f dE_v,inf/(R T_p)) rho_v,sat(T_p), dE_v,inf = -R T_g ln RH,
+// f = a exp(-b (X - X_eq)^c), X_eq of the modified Henderson at (RH, T_g).
+TEST(ReactionEngineering, RateByHand)
+{
+    auto model = make("reactionEngineering", reaProps("0.98", "5", "0.8"));
+    const double rh = airRh(air), xeq = hendersonXeq(rh, air.temperature);
+    const double area = pi * 8e-3 * 8e-3;
+    for (double x : {0.05, 0.15, 0.33})
+    {
+        const double tp = 320.0;
+        const double f = 0.98 * std::exp(-5.0 * std::pow(std::max(0.0, x - xeq), 0.8));
+        const double dEinf = -gasConstant * air.temperature * std::log(rh);
+        const double surface = std::exp(-f * dEinf / (gasConstant * tp)) * saturated(tp);
+        const double expected = km * area * (surface - farVapour(air));
+        expectRel(model->rate(kernelAt(tp), x, nullptr, air, km), expected, 1e-10);
+    }
+}
+
+TEST(ReactionEngineering, NothingMovesAtEquilibriumAndEverythingTowardsIt)
+{
+    auto model = make("reactionEngineering", reaProps());
+    const Kernel k = kernelAt(air.temperature);
+    const double xeq = hendersonXeq(airRh(air), air.temperature);
+    const double free = km * pi * 64e-6 * (saturated(k.temperature) - farVapour(air));
+    EXPECT_LT(std::fabs(model->rate(k, xeq, nullptr, air, km)), 1e-12 * free);
+    EXPECT_GT(model->rate(k, xeq + 0.1, nullptr, air, km), 0.0);
+    // below X_eq f = a (the relative activation energy's value at X_eq): a
+    // kernel at the air's temperature neither dries nor takes water up
+    EXPECT_LT(std::fabs(model->rate(k, 0.5 * xeq, nullptr, air, km)), 1e-12 * free);
+    // long steps approach the equilibrium and never cross it
+    double x = 0.33;
+    for (int i = 0; i < 500; ++i)
+    {
+        model->advance(k, x, nullptr, air, km, 600.0);
+        EXPECT_GE(x, xeq * (1.0 - 1e-12)); // (X_eq by hand, to round-off)
+    }
+    EXPECT_NEAR(x, xeq, 1e-6);
+    x = 0.33;
+    model->advance(k, x, nullptr, air, km, 1e9);
+    EXPECT_GE(x, xeq * (1.0 - 1e-12));
+    EXPECT_NEAR(x, xeq, 1e-6);
+}
+
+// Saturated air: dE_v,inf -> 0, the surface is saturated, the REA dries as free water.
+TEST(ReactionEngineering, NearlySaturatedAirGivesFreeWater)
+{
+    const double wNearSat = psy::humidityRatioFromRH(60.0, 0.99999, 101325.0);
+    const MoistAir wet{333.15, wNearSat, 101325.0};
+    auto rea = make("reactionEngineering", reaProps());
+    auto free = make("freeWater", Parameters("x"));
+    const Kernel k = kernelAt(350.0); // hot kernel in saturated air: it still dries
+    expectRel(rea->rate(k, 0.2, nullptr, wet, km), free->rate(k, 0.2, nullptr, wet, km), 1e-4);
+}
+
+TEST(ReactionEngineering, ConservesAndIsStableFromATenthOfAMillisecondToADay)
+{
+    auto model = make("reactionEngineering", reaProps());
+    const Kernel k = kernelAt(330.0);
+    double previous = 0.33;
+    for (double dt : {1e-4, 1e-2, 1.0, 60.0, 3600.0, 86400.0})
+    {
+        double x = 0.33;
+        const double rate = model->rate(k, x, nullptr, air, km);
+        const double water = model->advance(k, x, nullptr, air, km, dt);
+        EXPECT_EQ(water, k.dryMass * (0.33 - x));
+        EXPECT_TRUE(std::isfinite(x));
+        EXPECT_LE(x, previous);                            // a longer step dries further ...
+        EXPECT_GE(x, 0.0);                                 // ... but never below zero
+        if (dt == 1e-4) expectRel(water, rate * dt, 1e-6); // a short step: the rate times dt
+        previous = x;
+    }
+    // zero film: nothing moves
+    double x = 0.33;
+    EXPECT_EQ(model->advance(k, x, nullptr, air, 0.0, 60.0), 0.0);
+    EXPECT_EQ(x, 0.33);
+    // ten minutes in one step against 6000 steps of 0.1 s: within 1 % of the change
+    double fine = 0.33, coarse = 0.33;
+    for (int i = 0; i < 6000; ++i) model->advance(k, fine, nullptr, air, km, 0.1);
+    model->advance(k, coarse, nullptr, air, km, 600.0);
+    EXPECT_NEAR(coarse, fine, 0.01 * (0.33 - fine));
+}
+
+// --- kernel diffusion -----------------------------------------------------------------
+
+TEST(KernelDiffusion, DiffusivityAndState)
+{
+    const KernelDiffusion model(diffusionProps());
+    // 5e-6 exp(-30000/(8.314462618 333.15)) = 9.89367e-11 m^2/s
+    expectRel(model.diffusivity(333.15), 9.89367e-11, 1e-5);
+    EXPECT_EQ(model.shells(), 15);
+    EXPECT_EQ(model.stateSize(), 16);
+    double sum = 0.0;
+    for (int i = 0; i < model.shells(); ++i) sum += model.weight(i);
+    EXPECT_NEAR(sum, 1.0, 1e-15);
+    std::vector<double> state(model.stateSize());
+    model.initialise(0.33, state.data());
+    for (double v : state) EXPECT_EQ(v, 0.33);
+}
+
+// Crank (The mathematics of diffusion, 1975, eq 6.20): a sphere of radius R
+// at uniform X_0 whose surface is held at X_eq from t = 0 has the mean
+//   MR = (X - X_eq)/(X_0 - X_eq) = 6/pi^2 sum_n n^-2 exp(-n^2 pi^2 D t/R^2).
+// A film far faster than the diffusion holds the surface at X_eq (k_m =
+// 1000 m/s: the film conductance exceeds the kernel's by 1e5). With the
+// default 15 shells the mean X and MR are within 0.5 % until MR = 0.1, the
+// steps growing from 1 ms to a minute (the model cuts them to D dt/R^2 <= 5e-5).
+TEST(KernelDiffusion, MatchesCranksSeriesAtConstantSurfaceMoisture)
+{
+    const KernelDiffusion model(diffusionProps());
+    const Kernel k = kernelAt(air.temperature);
+    const double xeq = hendersonXeq(airRh(air), air.temperature), x0 = 0.33;
+    const double tauPerSecond = model.diffusivity(k.temperature) / (4e-3 * 4e-3);
+    auto crank = [&](double tau) {
+        const int terms = static_cast<int>(std::sqrt(60.0 / (pi * pi * tau))) + 2;
+        double sum = 0.0;
+        for (int n = terms; n >= 1; --n) sum += std::exp(-n * n * pi * pi * tau) / (n * n);
+        return 6.0 / (pi * pi) * sum;
+    };
+    std::vector<double> state(model.stateSize());
+    model.initialise(x0, state.data());
+    double x = x0, t = 0.0, dt = 1e-3, worstMr = 0.0, worstX = 0.0;
+    int steps = 0;
+    for (; steps < 100000; ++steps)
+    {
+        model.advance(k, x, state.data(), air, 1000.0, dt);
+        t += dt;
+        dt = std::min(60.0, 1.05 * dt);
+        const double exact = crank(tauPerSecond * t);
+        if (exact < 0.1) break;
+        const double mr = (x - xeq) / (x0 - xeq);
+        worstMr = std::max(worstMr, std::fabs(mr / exact - 1.0));
+        const double xExact = xeq + exact * (x0 - xeq);
+        worstX = std::max(worstX, std::fabs(x / xExact - 1.0));
+    }
+    EXPECT_LT(worstMr, 0.005);
+    EXPECT_LT(worstX, 0.005);
+    EXPECT_GT(steps, 100);
+    EXPECT_NEAR(state[model.shells()], xeq, 1e-4 * xeq); // the surface sat at X_eq
+}
+
+TEST(KernelDiffusion, ConservesWaterToRoundOff)
+{
+    const KernelDiffusion model(diffusionProps());
+    const Kernel k = kernelAt(320.0);
+    std::vector<double> state(model.stateSize());
+    model.initialise(0.33, state.data());
+    double x = 0.33;
+    for (double dt : {1e-4, 0.01, 1.0, 60.0, 600.0})
+    {
+        std::vector<double> before(state);
+        const double xBefore = x;
+        const double rate = model.rate(k, x, state.data(), air, km);
+        const double water = model.advance(k, x, state.data(), air, km, dt);
+        double shellWater = 0.0, mean = 0.0;
+        for (int i = 0; i < model.shells(); ++i)
+        {
+            shellWater += k.dryMass * model.weight(i) * (before[i] - state[i]);
+            mean += model.weight(i) * state[i];
+        }
+        EXPECT_EQ(water, k.dryMass * (xBefore - x));
+        EXPECT_NEAR(water, shellWater, 1e-15 * k.dryMass);
+        EXPECT_EQ(x, mean);
+        if (dt == 1e-4) expectRel(water, rate * dt, 1e-4);
+    }
+}
+
+TEST(KernelDiffusion, StableAndBoundedFromATenthOfAMillisecondToADay)
+{
+    const KernelDiffusion model(diffusionProps());
+    const Kernel k = kernelAt(350.0);
+    for (double dt : {1e-4, 0.02, 1.0, 60.0, 3600.0, 86400.0})
+    {
+        std::vector<double> state(model.stateSize());
+        model.initialise(0.33, state.data());
+        double x = 0.33;
+        for (int i = 0; i < 20; ++i)
+        {
+            const double previous = x;
+            model.advance(k, x, state.data(), air, km, dt);
+            EXPECT_LE(x, previous) << dt;
+        }
+        const double surface = state[model.shells()];
+        for (int i = 0; i < model.shells(); ++i)
+        {
+            EXPECT_TRUE(std::isfinite(state[i]));
+            EXPECT_GE(state[i], surface - 1e-12) << dt << " shell " << i; // the surface is the driest
+            EXPECT_LE(state[i], 0.33 + 1e-12) << dt;
+            if (i > 0)
+            {
+                EXPECT_LE(state[i], state[i - 1] + 1e-12); // drier outwards
+            }
+        }
+    }
+}
+
+TEST(KernelDiffusion, TheFilmLimitsTheSurface)
+{
+    const KernelDiffusion model(diffusionProps());
+    const Kernel k = kernelAt(air.temperature);
+    const double xeq = hendersonXeq(airRh(air), air.temperature);
+    std::vector<double> state(model.stateSize());
+    // no film: nothing leaves, nothing moves
+    model.initialise(0.33, state.data());
+    double x = 0.33;
+    EXPECT_EQ(model.rate(k, x, state.data(), air, 0.0), 0.0);
+    EXPECT_NEAR(model.advance(k, x, state.data(), air, 0.0, 600.0), 0.0, 1e-15 * k.dryMass);
+    for (int i = 0; i < model.shells(); ++i) EXPECT_NEAR(state[i], 0.33, 1e-14);
+    // a real film: the surface between X_eq and the outer shell, in equilibrium
+    // with the vapour the film carries: k_m A (a_w(X_s) rho_sat - rho_inf) = m_dot
+    model.initialise(0.33, state.data());
+    x = 0.33;
+    model.advance(k, x, state.data(), air, km, 60.0);
+    const double surface = state[model.shells()];
+    EXPECT_GT(surface, xeq);
+    EXPECT_LT(surface, state[model.shells() - 1]);
+    const double aw = 1.0 - std::exp(-8.6541e-5 * (60.0 + 49.810) * std::pow(100.0 * surface, 1.8634));
+    const double film = km * pi * 64e-6 * (aw * saturated(k.temperature) - farVapour(air));
+    expectRel(model.rate(k, x, state.data(), air, km), film, 1e-3);
+    // the heat taken is the grain's at the surface moisture
+    EXPECT_EQ(
+        model.latentHeat(k, x, state.data()),
+        SorptionIsotherm::New("modifiedHenderson", Parameters("x"))->latentHeat(surface, k.temperature));
+}
