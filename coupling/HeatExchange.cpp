@@ -14,7 +14,8 @@ HeatExchange::HeatExchange(std::unique_ptr<HeatTransferModel> model) : model_(st
 HeatCellCoefficients
 HeatExchange::cellCoefficients(const CellLocator& mesh, const std::vector<Particle>& particles,
                                const ParticleCellMap& map, const ExchangeResult& momentum,
-                               const GasHeatCellFields& f, const GasThermalProperties& gas) const
+                               const GasHeatCellFields& f, const GasThermalProperties& gas,
+                               double vapourDiffusivity) const
 {
     const std::size_t nCells = static_cast<std::size_t>(mesh.nCells());
     if (f.centre.size() != nCells || f.U.size() != nCells || f.voidFraction.size() != nCells
@@ -41,6 +42,7 @@ HeatExchange::cellCoefficients(const CellLocator& mesh, const std::vector<Partic
     out.region.assign(nCells, -1);
     out.K.assign(nCells, 0.0);
     out.S.assign(nCells, 0.0);
+    if (vapourDiffusivity > 0.0) out.km.assign(nCells, 0.0);
     for (std::size_t c = 0; c < nCells; ++c)
     {
         const double area = sums[2 * c], areaT = sums[2 * c + 1];
@@ -54,6 +56,8 @@ HeatExchange::cellCoefficients(const CellLocator& mesh, const std::vector<Partic
         out.region[c] = model_->region(cell);
         out.K[c] = h * area / volume;
         out.S[c] = h * areaT / volume;
+        if (vapourDiffusivity > 0.0)
+            out.km[c] = model_->massTransferCoefficient(cell, gas, vapourDiffusivity);
     }
     return out;
 }

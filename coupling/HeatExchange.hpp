@@ -41,6 +41,7 @@ struct HeatCellCoefficients
     std::vector<int> region;      // 1 spout, 0 downcomer, -1 no rule or no solid
     std::vector<double> K;        // implicit coefficient [W m^-3 K^-1]
     std::vector<double> S;        // explicit part [W m^-3]
+    std::vector<double> km;       // k_m [m/s] of the same correlation at Sc (with drying); else empty
 };
 
 class HeatExchange
@@ -51,10 +52,13 @@ public:
     const HeatTransferModel& model() const { return *model_; }
 
     // momentum: the cell averages (Us, Sauter diameter) of the same step.
+    // vapourDiffusivity > 0 [m^2/s] (drying): also each cell's mass-transfer
+    // coefficient k_m, the Sherwood form of the cell's correlation at the same
+    // Re, so heat and mass see the same flow.
     HeatCellCoefficients cellCoefficients(const CellLocator& mesh, const std::vector<Particle>& particles,
                                           const ParticleCellMap& map, const ExchangeResult& momentum,
-                                          const GasHeatCellFields& gasFields,
-                                          const GasThermalProperties& gas) const;
+                                          const GasHeatCellFields& gasFields, const GasThermalProperties& gas,
+                                          double vapourDiffusivity = 0.0) const;
 
     // q_i [W into particle i] for the gas temperatures Tgas [K] per cell.
     std::vector<double> particleHeatFlux(const std::vector<Particle>& particles, const ParticleCellMap& map,

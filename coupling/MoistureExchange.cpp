@@ -1,0 +1,75 @@
+#include "MoistureExchange.hpp"
+
+#include "Psychrometrics.hpp"
+
+#include <stdexcept>
+#include <utility>
+
+namespace spoutlab
+{
+
+MoistureExchange::MoistureExchange(std::unique_ptr<DryingModel> model, double pressure)
+    : model_(std::move(model)), pressure_(pressure)
+{
+    if (!model_) throw std::invalid_argument("MoistureExchange: no drying model");
+}
+
+void MoistureExchange::initialise(KernelMoisture& kernels, std::size_t i) const
+{
+    const std::size_t width = static_cast<std::size_t>(model_->stateSize());
+    model_->initialise(kernels.moisture[i], width ? &kernels.state[width * i] : nullptr);
+}
+
+MoistureStep MoistureExchange::advance(const CellLocator& mesh, const std::vector<Particle>& particles,
+                                       const ParticleCellMap& map, const MoistureCellFields& gas,
+                                       KernelMoisture& kernels, double dt) const
+{
+    const std::size_t nCells = static_cast<std::size_t>(mesh.nCells());
+    const std::size_t n = particles.size();
+    const std::size_t width = static_cast<std::size_t>(model_->stateSize());
+    if (gas.temperature.size() != nCells || gas.humidityRatio.size() != nCells
+        || gas.massTransfer.size() != nCells || map.nParticles() != n || kernels.dryMass.size() != n
+        || kernels.moisture.size() != n || kernels.state.size() != width * n || !(dt > 0.0))
+    {
+        throw std::invalid_argument("MoistureExchange: field, particle or state sizes do not match");
+    }
+    MoistureStep out;
+    out.waterLost.assign(n, 0.0);
+    out.latentHeat.assign(n, 0.0);
+    // per cell: water and water x T_p, with the halo's shares sent to their owners
+    std::vector<double> sums(2 * nCells, 0.0);
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        double Tg = 0.0, W = 0.0, km = 0.0;
+        for (const CellWeight& cw : map.cells(i))
+        {
+            Tg += cw.weight * gas.temperature[cw.cell];
+            W += cw.weight * gas.humidityRatio[cw.cell];
+            km += cw.weight * gas.massTransfer[cw.cell];
+        }
+        if (map.cells(i).size() == 0) continue;
+        const Kernel kernel{2.0 * particles[i].radius, kernels.dryMass[i], particles[i].temperature};
+        double* state = width ? &kernels.state[width * i] : nullptr;
+        out.latentHeat[i] = model_->latentHeat(kernel, kernels.moisture[i], state);
+        const MoistAir air{Tg, W, pressure_};
+        const double dW = model_->advance(kernel, kernels.moisture[i], state, air, km, dt);
+        out.waterLost[i] = dW;
+        for (const CellWeight& cw : map.cells(i))
+        {
+            sums[2 * cw.cell] += cw.weight * dW;
+            sums[2 * cw.cell + 1] += cw.weight * dW * kernel.temperature;
+        }
+    }
+    mesh.complete(sums, 2);
+    out.vapourSource.assign(nCells, 0.0);
+    out.vapourEnthalpy.assign(nCells, 0.0);
+    for (std::size_t c = 0; c < nCells; ++c)
+    {
+        const double perVolumeTime = 1.0 / (dt * mesh.cellVolume(static_cast<label>(c)));
+        out.vapourSource[c] = sums[2 * c] * perVolumeTime;
+        out.vapourEnthalpy[c] = psy::kCpVapour * sums[2 * c + 1] * perVolumeTime;
+    }
+    return out;
+}
+
+} // namespace spoutlab

@@ -1,0 +1,148 @@
+// Moisture exchange: a particle sees the gas of its cells weighted by its
+// volume in each, dries by its model over the step, and the gas receives
+// exactly the water the particles lose, with the vapour's enthalpy at the
+// particle's temperature. Free-water kernels, whose rate is known by hand:
+// m_dot = k_m pi d^2 (rho_v,sat(T_p) - rho_v,inf(T_g, W)).
+
+#include "CartesianMesh.hpp"
+#include "DividedVoidFraction.hpp"
+#include "MoistureExchange.hpp"
+#include "Psychrometrics.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+using namespace spoutlab;
+
+namespace
+{
+
+const double pi = std::acos(-1.0);
+const double rv = 287.042 / 0.621945; // R_v of the psychrometrics
+const double p0 = 101325.0;
+
+double saturated(double T)
+{
+    return psy::saturationPressure(T - 273.15) / (rv * T);
+}
+double vapour(double T, double W)
+{
+    return p0 * W / (0.621945 + W) / (rv * T);
+}
+
+MoistureExchange freeWater()
+{
+    return MoistureExchange(DryingModel::New("freeWater", Parameters("freeWaterProps")), p0);
+}
+
+Particle kernelAt(long id, const Vec3& x, double T)
+{
+    Particle p;
+    p.id = id;
+    p.x = x;
+    p.radius = 4e-3;
+    p.temperature = T;
+    return p;
+}
+
+struct Gas
+{
+    std::vector<double> T, W, km;
+    MoistureCellFields fields() const { return {T, W, km}; }
+};
+
+} // namespace
+
+// Two cells of 20 mm side; a particle on their common face has half its volume
+// in each and sees the mean of their gas; one wholly in the second cell sees
+// that cell's gas alone.
+TEST(MoistureExchange, ParticleDriesInTheWeightedGasOfItsCells)
+{
+    const CartesianMesh mesh({0.0, 0.02, 0.04}, {0.0, 0.02}, {0.0, 0.02});
+    const std::vector<Particle> particles{kernelAt(1, {0.02, 0.01, 0.01}, 320.0),
+                                          kernelAt(2, {0.03, 0.01, 0.01}, 310.0)};
+    DividedVoidFraction divided(Parameters("dividedProps"));
+    const VoidFractionResult vf = divided.compute(mesh, particles);
+    const Gas gas{{350.0, 330.0}, {0.01, 0.02}, {0.04, 0.06}};
+    KernelMoisture kernels{{2.5e-4, 2.5e-4}, {0.3, 0.3}, {}};
+    const double dt = 0.01;
+    const MoistureStep step = freeWater().advance(mesh, particles, vf.map, gas.fields(), kernels, dt);
+
+    const double area = pi * 8e-3 * 8e-3;
+    // particle 1: half in each cell (the face splits it into equal halves)
+    const double m1 = 0.05 * area * (saturated(320.0) - vapour(340.0, 0.015));
+    const double m2 = 0.06 * area * (saturated(310.0) - vapour(330.0, 0.02));
+    EXPECT_NEAR(step.waterLost[0], m1 * dt, 1e-9 * m1 * dt);
+    EXPECT_NEAR(step.waterLost[1], m2 * dt, 1e-9 * m2 * dt);
+    EXPECT_NEAR(kernels.moisture[0], 0.3 - m1 * dt / 2.5e-4, 1e-12);
+    // the latent heat of free water at the particle's temperature
+    EXPECT_DOUBLE_EQ(step.latentHeat[0], psy::latentHeat(320.0 - 273.15));
+
+    const double volume = 0.02 * 0.02 * 0.02;
+    EXPECT_NEAR(step.vapourSource[0], 0.5 * m1 / volume, 1e-9 * m1 / volume);
+    EXPECT_NEAR(step.vapourSource[1], (0.5 * m1 + m2) / volume, 1e-9 * m2 / volume);
+    EXPECT_NEAR(step.vapourEnthalpy[1], 1860.0 * (0.5 * m1 * 320.0 + m2 * 310.0) / volume,
+                1e-9 * 1860.0 * m2 * 310.0 / volume);
+}
+
+// Random kernels in a 4 x 3 x 2 mesh: the water the cells receive is the
+// water the particles lose, and the enthalpy is c_pv T_p times each share.
+TEST(MoistureExchange, GasReceivesTheWaterTheParticlesLose)
+{
+    const CartesianMesh mesh = CartesianMesh::uniform({0, 0, 0}, {0.08, 0.06, 0.04}, 4, 3, 2);
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    std::vector<Particle> particles;
+    for (long id = 1; id <= 40; ++id)
+    {
+        particles.push_back(kernelAt(id,
+                                     {0.004 + 0.072 * u(rng), 0.004 + 0.052 * u(rng), 0.004 + 0.032 * u(rng)},
+                                     300.0 + 30.0 * u(rng)));
+    }
+    DividedVoidFraction divided(Parameters("dividedProps"));
+    const VoidFractionResult vf = divided.compute(mesh, particles);
+    Gas gas;
+    for (label c = 0; c < mesh.nCells(); ++c)
+    {
+        gas.T.push_back(320.0 + 20.0 * u(rng));
+        gas.W.push_back(0.005 + 0.02 * u(rng));
+        gas.km.push_back(0.03 + 0.04 * u(rng));
+    }
+    KernelMoisture kernels{std::vector<double>(40, 2.5e-4), std::vector<double>(40, 0.3), {}};
+    const double dt = 3e-4;
+    const MoistureStep step = freeWater().advance(mesh, particles, vf.map, gas.fields(), kernels, dt);
+
+    double lost = 0.0, lostEnthalpy = 0.0, received = 0.0, enthalpy = 0.0;
+    for (std::size_t i = 0; i < particles.size(); ++i)
+    {
+        lost += step.waterLost[i];
+        lostEnthalpy += 1860.0 * step.waterLost[i] * particles[i].temperature;
+        EXPECT_NEAR(kernels.moisture[i], 0.3 - step.waterLost[i] / 2.5e-4, 1e-15);
+    }
+    for (label c = 0; c < mesh.nCells(); ++c)
+    {
+        received += step.vapourSource[c] * mesh.cellVolume(c) * dt;
+        enthalpy += step.vapourEnthalpy[c] * mesh.cellVolume(c) * dt;
+    }
+    ASSERT_GT(lost, 0.0);
+    EXPECT_NEAR(received, lost, 1e-13 * lost);
+    EXPECT_NEAR(enthalpy, lostEnthalpy, 1e-13 * lostEnthalpy);
+}
+
+// A particle outside the mesh (an empty row) neither dries nor gives water.
+TEST(MoistureExchange, LostParticleExchangesNothing)
+{
+    const CartesianMesh mesh({0.0, 0.02}, {0.0, 0.02}, {0.0, 0.02});
+    const std::vector<Particle> particles{kernelAt(1, {0.5, 0.01, 0.01}, 320.0)};
+    DividedVoidFraction divided(Parameters("dividedProps"));
+    const VoidFractionResult vf = divided.compute(mesh, particles);
+    const Gas gas{{350.0}, {0.01}, {0.05}};
+    KernelMoisture kernels{{2.5e-4}, {0.3}, {}};
+    const MoistureStep step = freeWater().advance(mesh, particles, vf.map, gas.fields(), kernels, 0.01);
+    EXPECT_EQ(step.waterLost[0], 0.0);
+    EXPECT_EQ(kernels.moisture[0], 0.3);
+    EXPECT_EQ(step.vapourSource[0], 0.0);
+}
