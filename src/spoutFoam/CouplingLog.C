@@ -37,7 +37,10 @@ void trimRowsAfter(const std::string& file, double tMax)
 } // namespace
 
 
-CouplingLog::CouplingLog(const Foam::Time& runTime, bool heat, bool resumed)
+CouplingLog::CouplingLog
+(
+    const Foam::Time& runTime, bool heat, bool moisture, bool resumed
+)
 {
     if (!Foam::Pstream::master()) return;
     const Foam::fileName dir = runTime.globalPath()/"postProcessing";
@@ -53,11 +56,11 @@ CouplingLog::CouplingLog(const Foam::Time& runTime, bool heat, bool resumed)
     (
         new std::ofstream(file, fresh ? std::ios::trunc : std::ios::app)
     );
-    if (fresh || file_->tellp() == 0) writeHeader(heat);
+    if (fresh || file_->tellp() == 0) writeHeader(heat, moisture);
 }
 
 
-void CouplingLog::writeHeader(bool heat)
+void CouplingLog::writeHeader(bool heat, bool moisture)
 {
     *file_
         << "time [s],particles,particle mass [kg],solid volume [m3],"
@@ -72,6 +75,16 @@ void CouplingLog::writeHeader(bool heat)
             << "gas enthalpy in [W],gas enthalpy out [W],"
             << "gas outlet temperature [K],gas energy [J],"
             << "particle energy [J],mean particle temperature [K]";
+    }
+    if (moisture)
+    {
+        *file_
+            << ",particle water [kg],water lost by particles [kg/s],"
+            << "vapour to gas [kg/s],vapour in [kg/s],vapour out [kg/s],"
+            << "gas vapour [kg],outlet humidity ratio,outlet relative humidity,"
+            << "latent heat from particles [W],sorption heat [W],"
+            << "vapour enthalpy to gas [W],gas latent energy [J],"
+            << "latent energy in [W],latent energy out [W]";
     }
     *file_ << '\n';
 }
@@ -97,6 +110,24 @@ void CouplingLog::write(const CouplingRow& row)
             << ',' << h.inflow << ',' << h.outflow << ','
             << h.outletTemperature << ',' << h.gasEnergy << ','
             << h.particleEnergy << ',' << h.meanParticleTemperature;
+    }
+    if (row.moisture)
+    {
+        const MoistureRow& m = *row.moisture;
+        os << std::setprecision(15);
+        for
+        (
+            const double v
+          : {
+                m.particleWater, m.waterLost, m.vapourReceived, m.vapourIn,
+                m.vapourOut, m.gasVapour, m.outletHumidity, m.outletRH,
+                m.latentHeat, m.sorptionHeat, m.vapourEnthalpy,
+                m.gasLatentEnergy, m.latentIn, m.latentOut
+            }
+        )
+        {
+            os << ',' << v;
+        }
     }
     os << '\n';
     os.flush();

@@ -72,7 +72,8 @@ DemCoupling::DemCoupling
     startDem();
     guards_.checkTimeSteps(*dem_, couplingInterval_, liggghtsInput_);
     startHeat(phi, rho.value(), mu.value());
-    log_.reset(new CouplingLog(mesh.time(), bool(heat_), resumed_));
+    startMoisture(phi, rho.value());
+    log_.reset(new CouplingLog(mesh.time(), bool(heat_), bool(moisture_), resumed_));
     writeFoamStub();
     startFromBed();
 }
@@ -123,7 +124,10 @@ void DemCoupling::selectModels()
 
 void DemCoupling::startDem()
 {
-    dem_ = startLiggghts(mesh_.time(), dict_, liggghtsInput_);
+    dem_ = startLiggghts
+    (
+        mesh_.time(), dict_, liggghtsInput_, MoistureCoupling::stateSize(dict_)
+    );
     if (Foam::Pstream::parRun()) matchSlabs(mesh_, *dem_, locator_);
     resumeStepState();
     Foam::Info<< "LIGGGHTS: " << dem_->nParticles() << " particles from "
@@ -166,6 +170,24 @@ void DemCoupling::startHeat
 }
 
 
+void DemCoupling::startMoisture(const Foam::surfaceScalarField& phi, double rho)
+{
+    const Foam::word model = dict_.getOrDefault<Foam::word>("dryingModel", "none");
+    if (model != "none" && !heat_)
+    {
+        throw InputError
+        (
+            "constant/couplingProperties: drying (dryingModel " + model + ") "
+            "expects gas-to-particle heat transfer, key 'heatTransferModel'"
+        );
+    }
+    moisture_ = MoistureCoupling::New
+    (
+        mesh_, locator_, dict_, voidfraction_, phi, rho, heat_ ? heat_->gas().cp : 0.0
+    );
+}
+
+
 void DemCoupling::writeFoamStub() const
 {
     // ParaView opens OpenFOAM cases through an empty <case>.foam file
@@ -186,6 +208,11 @@ void DemCoupling::startFromBed()
     // from gas fields the time directory no longer holds).
     vf_ = mapParticles();
     voidfraction_.oldTime() = voidfraction_;
+    if (moisture_)
+    {
+        moisture_->startParticles(*dem_, heat_->T());
+        heat_->useHumidGas(moisture_->humidGas());
+    }
     if (!resumed_)
     {
         exchange(vf_);
@@ -212,6 +239,10 @@ void DemCoupling::evolve()
     dem_->run(couplingInterval_);
     vf_ = mapParticles();
     exchange(vf_);
+    if (moisture_)
+    {
+        moisture_->dryParticles(*dem_, particles_, vf_.map, heat_->cells(), heat_->T(), g_);
+    }
 }
 
 
@@ -275,9 +306,15 @@ void DemCoupling::exchange(const VoidFractionResult& vf)
 
 void DemCoupling::solveEnergy()
 {
+    if (moisture_)
+    {
+        moisture_->solveVapour(heat_->T());
+        guards_.checkField(moisture_->Y());
+    }
     if (!heat_) return;
     heat_->solveGas();
     guards_.checkField(heat_->T());
+    if (moisture_) moisture_->updateHumidity(heat_->T());
     transferHeat();
 }
 
@@ -288,8 +325,16 @@ void DemCoupling::transferHeat()
     // this rank's share, like the forces
     heatFlux_ = heat_->particleHeatFlux(particles_, vf_.map);
     guards_.checkParticles("heat flux", heatFlux_, particles_);
-    dem_->setHeatFluxes(heatFlux_);
+    // with drying, less the latent heat and for the wet kernel's capacity
+    dem_->setHeatFluxes
+    (
+        moisture_ ? moisture_->liggghtsHeatFluxes(*dem_, heatFlux_) : heatFlux_
+    );
     row_.heat = heatRow();
+    if (moisture_)
+    {
+        row_.moisture = moisture_->balance(particles_, row_.heat->outletTemperature);
+    }
 }
 
 
@@ -348,16 +393,31 @@ HeatRow DemCoupling::heatRow() const
     for (double q : heatFlux_) toParticles += q;
     sumOverRanks(&toParticles, 1);
     const GasHeatBalance b = heat_->balance();
-    const LiggghtsDem::HeatContent particles = dem_->heatContent();
-    const double meanTp = particles.energy/std::max(particles.capacity, 1e-300);
+    const std::pair<double, double> particles = particleHeatContent();
+    const double meanTp = particles.first/std::max(particles.second, 1e-300);
     Foam::Info<< "Heat: " << toParticles << " W to the particles, mean "
         << "particle temperature " << meanTp << " K, gas outlet "
         << b.outletTemperature << " K" << Foam::endl;
     return HeatRow
     {
         toParticles, b.gasGave, b.inflow, b.outflow, b.outletTemperature,
-        b.gasEnergy, particles.energy, meanTp
+        b.gasEnergy, particles.first, meanTp
     };
+}
+
+
+std::pair<double, double> DemCoupling::particleHeatContent() const
+{
+    // m c_p T and m c_p: of the types' c_p, or with drying of the wet kernels
+    if (!moisture_)
+    {
+        const LiggghtsDem::HeatContent c = dem_->heatContent();
+        return {c.energy, c.capacity};
+    }
+    std::pair<double, double> c = moisture_->particleHeatContent(particles_);
+    double sums[2] = {c.first, c.second};
+    sumOverRanks(sums, 2);
+    return {sums[0], sums[1]};
 }
 
 
@@ -398,6 +458,13 @@ void DemCoupling::writeParticles()
         for (const Particle& p : particles_) T.push_back(p.temperature);
         h = heat_->particleH(vf_.map);
         columns.scalars = {{"temperature", &T}, {"heatFlux", &heatFlux_}, {"h", &h}};
+    }
+    std::vector<double> rate;
+    if (moisture_)
+    {
+        rate = moisture_->dryingRate();
+        columns.scalars.push_back({"moisture", &moisture_->moisture()});
+        columns.scalars.push_back({"dryingRate", &rate});
     }
     const Foam::Time& runTime = mesh_.time();
     particleOutput_.write(runTime.value(), runTime.timeName(), particles_, columns);

@@ -5,6 +5,10 @@
 
 #include "OStringStream.H"
 
+#include "InputError.hpp"
+
+#include <cmath>
+
 namespace spoutlab
 {
 
@@ -39,5 +43,35 @@ Parameters toParameters(const Foam::dictionary& parent, const Foam::word& name)
     return params;
 }
 
+
+double positiveEntry
+(
+    const Foam::dictionary& dict,
+    const std::string& file,
+    const Foam::word& key,
+    const std::string& what,
+    const std::string& needed
+)
+{
+    const Foam::entry* e = dict.findEntry(key, Foam::keyType::LITERAL);
+    std::string got;
+    if (e && !e->isDict())
+    {
+        Foam::ITstream& is = e->stream();
+        if (is.size() == 1 && is[0].isNumber())
+        {
+            const double value = is[0].number();
+            if (value > 0 && std::isfinite(value)) return value;
+        }
+        Foam::OStringStream os;
+        forAll(is, i) os << (i ? " " : "") << is[i];
+        got = os.str();
+    }
+    throw InputError
+    (
+        file + ": key '" + key + "' expected " + what
+      + (e ? ", got '" + got + "'" : " (missing; " + needed + " needs it)")
+    );
+}
 
 } // namespace spoutlab

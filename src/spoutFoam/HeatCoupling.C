@@ -17,37 +17,6 @@ namespace spoutlab
 namespace
 {
 
-// A positive number from a dictionary, or one line naming file and key.
-double positiveEntry
-(
-    const Foam::dictionary& dict,
-    const std::string& file,
-    const Foam::word& key,
-    const std::string& what
-)
-{
-    const Foam::entry* e = dict.findEntry(key, Foam::keyType::LITERAL);
-    std::string got;
-    if (e && !e->isDict())
-    {
-        Foam::ITstream& is = e->stream();
-        if (is.size() == 1 && is[0].isNumber())
-        {
-            const double value = is[0].number();
-            if (value > 0 && std::isfinite(value)) return value;
-        }
-        Foam::OStringStream os;
-        forAll(is, i) os << (i ? " " : "") << is[i];
-        got = os.str();
-    }
-    throw InputError
-    (
-        file + ": key '" + key + "' expected " + what
-      + (e ? ", got '" + got + "'" : " (missing; heat transfer needs it)")
-    );
-}
-
-
 GasThermalProperties readGas(const Foam::fvMesh& mesh, double rho, double mu)
 {
     const Foam::IOdictionary transport
@@ -242,7 +211,8 @@ void HeatCoupling::updateCoefficients
     cells_ = exchange_.cellCoefficients
     (
         locator_, particles, map, momentum,
-        GasHeatCellFields{centres_, locator_.withHalo(U.primitiveField()), eps}, gas_
+        GasHeatCellFields{centres_, locator_.withHalo(U.primitiveField()), eps}, gas_,
+        humid_ ? humid_->vapourDiffusivity : 0.0
     );
     forAll(K_, i)
     {
@@ -259,8 +229,56 @@ void HeatCoupling::updateCoefficients
 }
 
 
+void HeatCoupling::useHumidGas(const HumidGas& humid)
+{
+    humid_.reset(new HumidGas(humid));
+    epsCp_.reset
+    (
+        new Foam::volScalarField
+        (
+            Foam::IOobject
+            (
+                "epsCp", mesh_.time().timeName(), mesh_,
+                Foam::IOobject::NO_READ, Foam::IOobject::NO_WRITE
+            ),
+            voidfraction_*humid.cp
+        )
+    );
+    epsCp_->oldTime();
+}
+
+
+Foam::tmp<Foam::fvScalarMatrix> HeatCoupling::humidEnergyEquation()
+{
+    const Foam::dimensionedScalar rho("rho", Foam::dimDensity, gas_.rho);
+    const Foam::dimensionedScalar kappa
+    (
+        "kappa", Foam::dimensionSet(1, 1, -3, -1, 0), gas_.kappa
+    );
+    *epsCp_ = voidfraction_*humid_->cp;   // the last step's becomes the old time
+    const Foam::surfaceScalarField phiCp
+    (
+        "phiCp", phi_*Foam::fvc::interpolate(humid_->cp)
+    );
+    // conservative in eps c_p T, as the dry gas's equation is in eps T
+    return
+    (
+        rho*(Foam::fvm::ddt(*epsCp_, T_) + Foam::fvm::div(phiCp, T_, "div(phi,T)"))
+      - Foam::fvm::laplacian(kappa, T_)
+     ==
+        S_ + humid_->vapourEnthalpy - Foam::fvm::Sp(K_, T_)
+    );
+}
+
+
 void HeatCoupling::solveGas()
 {
+    if (humid_)
+    {
+        humidEnergyEquation()->solve();
+        updateQs();
+        return;
+    }
     const Foam::dimensionedScalar rhoCp
     (
         "rhoCp", Foam::dimensionSet(1, -1, -2, -1, 0), gas_.rho*gas_.cp
@@ -330,7 +348,13 @@ void HeatCoupling::checkTimeStep(double minHeatCapacityPerArea) const
 
 GasHeatBalance HeatCoupling::balance() const
 {
+    // rho c_p of the gas per cell and boundary face: constant, or the humid
+    // gas's c_p
     const double rhoCp = gas_.rho*gas_.cp;
+    auto rhoCpAt = [&](Foam::label patchi, Foam::label facei)
+    {
+        return humid_ ? gas_.rho*humid_->cp.boundaryField()[patchi][facei] : rhoCp;
+    };
     const Foam::scalarField& V = mesh_.V().field();
     GasHeatBalance b{0, 0, 0, 0, 0};
     double outFlux = 0, outFluxT = 0;
@@ -346,7 +370,8 @@ GasHeatBalance HeatCoupling::balance() const
             // what the discretised equation lets through this face, into
             // the gas: convection phi T (phi > 0 leaves) and conduction
             const double into =
-                -rhoCp*phib[facei]*Tb[facei] + gas_.kappa*snGrad[facei]*magSf[facei];
+                -rhoCpAt(patchi, facei)*phib[facei]*Tb[facei]
+              + gas_.kappa*snGrad[facei]*magSf[facei];
             if (phib[facei] < 0) b.inflow += into;
             else b.outflow -= into;
             if (phib[facei] > 0)
@@ -359,7 +384,9 @@ GasHeatBalance HeatCoupling::balance() const
     forAll(V, i)
     {
         b.gasGave += V[i]*(K_[i]*T_[i] - S_[i]);
-        b.gasEnergy += rhoCp*V[i]*voidfraction_[i]*T_[i];
+        b.gasEnergy += humid_
+          ? gas_.rho*V[i]*(*epsCp_)[i]*T_[i]
+          : rhoCp*V[i]*voidfraction_[i]*T_[i];
     }
     double sums[6] = {b.gasGave, b.inflow, b.outflow, b.gasEnergy, outFlux, outFluxT};
     for (double& s : sums) Foam::reduce(s, Foam::sumOp<double>());

@@ -72,7 +72,8 @@ LiggghtsDem::LiggghtsDem
     const std::string& inputFile,
     const std::map<std::string, std::string>& variables,
     const std::string& logFile,
-    MPI_Comm comm
+    MPI_Comm comm,
+    int moistureState
 )
 :
     lmp_(nullptr),
@@ -121,6 +122,7 @@ LiggghtsDem::LiggghtsDem
     }
     findCouplingFixes(inputFile);
     findHeatFixes(inputFile);
+    if (moistureState >= 0) declareMoisture(inputFile, moistureState);
     {
         Activity doing("setting up the DEM run");
         setup();
@@ -225,6 +227,58 @@ void LiggghtsDem::findHeatFixes(const std::string& inputFile)
             );
         }
     }
+}
+
+
+void LiggghtsDem::declareMoisture(const std::string& inputFile, int stateSize)
+{
+    using namespace LAMMPS_NS;
+    auto* modify = lmp_->modify;
+    moisture_ = static_cast<FixPropertyAtom*>
+    (
+        modify->find_fix_property
+        (
+            "moisture", "property/atom", "scalar", 0, 0, "spoutFoam", false
+        )
+    );
+    if (!moisture_ || !hasHeat())
+    {
+        throw InputError
+        (
+            "LIGGGHTS input '" + inputFile + "': drying (dryingModel in "
+            "constant/couplingProperties) expects the particle moisture of "
+            "'fix ID all property/atom moisture scalar yes no no <X0>' [kg "
+            "water/kg dry solid] and the particle temperatures of "
+            "'fix ID all couple/cfd/convection'"
+        );
+    }
+    // what the coupling keeps per atom beside X: declared after the input
+    // read its restart, so a restarted run gets its values back (the same
+    // fix ids, styles and sizes; restart yes, no ghost communication)
+    command("fix spoutFoamDryMass all property/atom dryMass scalar yes no no 0");
+    dryMass_ = static_cast<FixPropertyAtom*>
+    (
+        modify->find_fix_property("dryMass", "property/atom", "scalar", 0, 0, "spoutFoam")
+    );
+    if (stateSize > 0)
+    {
+        std::string cmd =
+            "fix spoutFoamMoistureState all property/atom moistureState vector yes no no";
+        for (int k = 0; k < stateSize; ++k) cmd += " 0";
+        command(cmd);
+        moistureState_ = static_cast<FixPropertyAtom*>
+        (
+            modify->find_fix_property
+            (
+                "moistureState", "property/atom", "vector", stateSize, 0, "spoutFoam"
+            )
+        );
+    }
+    moistureStateSize_ = stateSize;
+    // the masses change between runs: LIGGGHTS then sends them to the ghost
+    // atoms every step (else a contact across a rank boundary sees the mass
+    // of the last re-neighbouring)
+    dryMass_->rad_mass_vary_flag = 1;
 }
 
 
@@ -388,6 +442,82 @@ LiggghtsDem::HeatContent LiggghtsDem::heatContent() const
     }
     MPI_Allreduce(MPI_IN_PLACE, sums, 2, MPI_DOUBLE, MPI_SUM, comm_);
     return HeatContent{sums[0], sums[1]};
+}
+
+
+std::vector<std::size_t> LiggghtsDem::localMoisture(KernelMoisture& kernels) const
+{
+    std::vector<std::size_t> fresh;
+    auto* atom = lmp_->atom;
+    const std::size_t n = localIds_.size(), width = std::size_t(moistureStateSize_);
+    kernels.dryMass.resize(n);
+    kernels.moisture.resize(n);
+    kernels.state.resize(width*n);
+    for (std::size_t k = 0; k < n; ++k)
+    {
+        const int i = atom->map(int(localIds_[k]));
+        kernels.moisture[k] = moisture_->vector_atom[i];
+        kernels.dryMass[k] = dryMass_->vector_atom[i];
+        if (!(kernels.dryMass[k] > 0))
+        {
+            kernels.dryMass[k] = atom->rmass[i]/(1 + kernels.moisture[k]);
+            fresh.push_back(k);
+        }
+        for (std::size_t s = 0; s < width; ++s)
+        {
+            kernels.state[width*k + s] = moistureState_->array_atom[i][s];
+        }
+    }
+    return fresh;
+}
+
+
+void LiggghtsDem::setMoisture(const KernelMoisture& kernels, const Vec3& g)
+{
+    const std::size_t width = std::size_t(moistureStateSize_);
+    std::vector<double> rows;
+    rows.reserve((2 + width)*kernels.moisture.size());
+    for (std::size_t k = 0; k < kernels.moisture.size(); ++k)
+    {
+        rows.push_back(kernels.moisture[k]);
+        rows.push_back(kernels.dryMass[k]);
+        for (std::size_t s = 0; s < width; ++s) rows.push_back(kernels.state[width*k + s]);
+    }
+    auto* atom = lmp_->atom;
+    LAMMPS_NS::FixPropertyAtom* X = moisture_;
+    LAMMPS_NS::FixPropertyAtom* md = dryMass_;
+    LAMMPS_NS::FixPropertyAtom* state = moistureState_;
+    toAtoms
+    (
+        rows, int(2 + width),
+        [=](int i, const double* r)
+        {
+            X->vector_atom[i] = r[0];
+            md->vector_atom[i] = r[1];
+            for (std::size_t s = 0; s < width; ++s) state->array_atom[i][s] = r[2 + s];
+            const double m = r[1]*(1 + r[0]);
+            const double dm = m - atom->rmass[i];
+            atom->f[i][0] += dm*g.x;
+            atom->f[i][1] += dm*g.y;
+            atom->f[i][2] += dm*g.z;
+            atom->rmass[i] = m;
+            const double r3 = atom->radius[i]*atom->radius[i]*atom->radius[i];
+            atom->density[i] = m/(4.0/3.0*3.14159265358979323846*r3);
+        }
+    );
+}
+
+
+std::vector<double> LiggghtsDem::liggghtsHeatCapacities() const
+{
+    auto* atom = lmp_->atom;
+    std::vector<double> C(localIds_.size());
+    for (std::size_t k = 0; k < localIds_.size(); ++k)
+    {
+        const int i = atom->map(int(localIds_[k]));
+        C[k] = atom->rmass[i]*heatCapacity_[atom->type[i] - 1];
+    }
+    return C;
 }
 
 

@@ -53,7 +53,8 @@ std::unique_ptr<LiggghtsDem> startLiggghts
 (
     const Foam::Time& runTime,
     const Foam::dictionary& couplingDict,
-    std::string& inputFile
+    std::string& inputFile,
+    int moistureState
 )
 {
     const Foam::fileName caseDir = runTime.globalPath();
@@ -67,7 +68,10 @@ std::unique_ptr<LiggghtsDem> startLiggghts
     inputFile = input;
     return std::unique_ptr<LiggghtsDem>
     (
-        new LiggghtsDem(input, vars, caseDir/"log.liggghts", MPI_COMM_WORLD)
+        new LiggghtsDem
+        (
+            input, vars, caseDir/"log.liggghts", MPI_COMM_WORLD, moistureState
+        )
     );
 }
 
