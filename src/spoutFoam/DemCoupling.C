@@ -71,9 +71,18 @@ DemCoupling::DemCoupling
     selectModels();
     startDem();
     guards_.checkTimeSteps(*dem_, couplingInterval_, liggghtsInput_);
-    startHeat(phi, rho.value(), mu.value());
-    startMoisture(phi, rho.value());
-    log_.reset(new CouplingLog(mesh.time(), bool(heat_), bool(moisture_), resumed_));
+    thermal_ = ThermalCoupling::New
+    (
+        mesh_, locator_, dict_, *dem_, liggghtsInput_, voidfraction_, phi,
+        rho.value(), mu.value()
+    );
+    log_.reset
+    (
+        new CouplingLog
+        (
+            mesh.time(), bool(thermal_), thermal_ && thermal_->drying(), resumed_
+        )
+    );
     writeFoamStub();
     startFromBed();
 }
@@ -155,39 +164,6 @@ void DemCoupling::resumeStepState()
 }
 
 
-void DemCoupling::startHeat
-(
-    const Foam::surfaceScalarField& phi, double rho, double mu
-)
-{
-    heat_ = HeatCoupling::New
-    (
-        mesh_, locator_, dict_, *dem_, liggghtsInput_, voidfraction_, phi, rho, mu
-    );
-    // the particles' m c_p/A do not change during a run (deleting particles
-    // can only raise the smallest), so it is taken once
-    if (heat_) minHeatCapacityPerArea_ = dem_->minHeatCapacityPerArea();
-}
-
-
-void DemCoupling::startMoisture(const Foam::surfaceScalarField& phi, double rho)
-{
-    const Foam::word model = dict_.getOrDefault<Foam::word>("dryingModel", "none");
-    if (model != "none" && !heat_)
-    {
-        throw InputError
-        (
-            "constant/couplingProperties: drying (dryingModel " + model + ") "
-            "expects gas-to-particle heat transfer, key 'heatTransferModel'"
-        );
-    }
-    moisture_ = MoistureCoupling::New
-    (
-        mesh_, locator_, dict_, voidfraction_, phi, rho, heat_ ? heat_->gas().cp : 0.0
-    );
-}
-
-
 void DemCoupling::writeFoamStub() const
 {
     // ParaView opens OpenFOAM cases through an empty <case>.foam file
@@ -208,11 +184,7 @@ void DemCoupling::startFromBed()
     // from gas fields the time directory no longer holds).
     vf_ = mapParticles();
     voidfraction_.oldTime() = voidfraction_;
-    if (moisture_)
-    {
-        moisture_->startParticles(*dem_, heat_->T());
-        heat_->useHumidGas(moisture_->humidGas());
-    }
+    if (thermal_) thermal_->start(*dem_);
     if (!resumed_)
     {
         exchange(vf_);
@@ -239,10 +211,7 @@ void DemCoupling::evolve()
     dem_->run(couplingInterval_);
     vf_ = mapParticles();
     exchange(vf_);
-    if (moisture_)
-    {
-        moisture_->dryParticles(*dem_, particles_, vf_.map, heat_->cells(), heat_->T(), g_);
-    }
+    if (thermal_) thermal_->dry(*dem_, particles_, vf_.map, g_);
 }
 
 
@@ -295,46 +264,22 @@ void DemCoupling::exchange(const VoidFractionResult& vf)
     fluidForce_ = ex.totalForce;
     dragForce_ = ex.dragForce;
     dem_->setFluidForces(fluidForce_);
-    if (heat_)
-    {
-        heat_->updateCoefficients(particles_, eps_, vf.map, ex);
-        heat_->checkTimeStep(minHeatCapacityPerArea_);
-    }
+    if (thermal_) thermal_->updateCoefficients(particles_, eps_, vf.map, ex);
     fillMomentumRow(vf, ex);
 }
 
 
 void DemCoupling::solveEnergy()
 {
-    if (moisture_)
-    {
-        moisture_->solveVapour(heat_->T());
-        guards_.checkField(moisture_->Y());
-    }
-    if (!heat_) return;
-    heat_->solveGas();
-    guards_.checkField(heat_->T());
-    if (moisture_) moisture_->updateHumidity(heat_->T());
+    if (!thermal_) return;
+    thermal_->solveGas(guards_);
     transferHeat();
 }
 
 
 void DemCoupling::transferHeat()
 {
-    if (!heat_) return;
-    // this rank's share, like the forces
-    heatFlux_ = heat_->particleHeatFlux(particles_, vf_.map);
-    guards_.checkParticles("heat flux", heatFlux_, particles_);
-    // with drying, less the latent heat and for the wet kernel's capacity
-    dem_->setHeatFluxes
-    (
-        moisture_ ? moisture_->liggghtsHeatFluxes(*dem_, heatFlux_) : heatFlux_
-    );
-    row_.heat = heatRow();
-    if (moisture_)
-    {
-        row_.moisture = moisture_->balance(particles_, row_.heat->outletTemperature);
-    }
+    if (thermal_) thermal_->transfer(*dem_, particles_, vf_.map, guards_, row_);
 }
 
 
@@ -387,40 +332,6 @@ void DemCoupling::fillMomentumRow
 }
 
 
-HeatRow DemCoupling::heatRow() const
-{
-    double toParticles = 0;
-    for (double q : heatFlux_) toParticles += q;
-    sumOverRanks(&toParticles, 1);
-    const GasHeatBalance b = heat_->balance();
-    const std::pair<double, double> particles = particleHeatContent();
-    const double meanTp = particles.first/std::max(particles.second, 1e-300);
-    Foam::Info<< "Heat: " << toParticles << " W to the particles, mean "
-        << "particle temperature " << meanTp << " K, gas outlet "
-        << b.outletTemperature << " K" << Foam::endl;
-    return HeatRow
-    {
-        toParticles, b.gasGave, b.inflow, b.outflow, b.outletTemperature,
-        b.gasEnergy, particles.first, meanTp
-    };
-}
-
-
-std::pair<double, double> DemCoupling::particleHeatContent() const
-{
-    // m c_p T and m c_p: of the types' c_p, or with drying of the wet kernels
-    if (!moisture_)
-    {
-        const LiggghtsDem::HeatContent c = dem_->heatContent();
-        return {c.energy, c.capacity};
-    }
-    std::pair<double, double> c = moisture_->particleHeatContent(particles_);
-    double sums[2] = {c.first, c.second};
-    sumOverRanks(sums, 2);
-    return {sums[0], sums[1]};
-}
-
-
 // --- output ------------------------------------------------------------------
 
 void DemCoupling::write()
@@ -448,24 +359,9 @@ void DemCoupling::write()
 
 void DemCoupling::writeParticles()
 {
-    // with heat: the temperature, the heat flux handed to LIGGGHTS [W] and
-    // the h each particle sees
     ParticleColumns columns;
     columns.vectors = {{"fluidForce", &fluidForce_}, {"dragForce", &dragForce_}};
-    std::vector<double> T, h;
-    if (heat_)
-    {
-        for (const Particle& p : particles_) T.push_back(p.temperature);
-        h = heat_->particleH(vf_.map);
-        columns.scalars = {{"temperature", &T}, {"heatFlux", &heatFlux_}, {"h", &h}};
-    }
-    std::vector<double> rate;
-    if (moisture_)
-    {
-        rate = moisture_->dryingRate();
-        columns.scalars.push_back({"moisture", &moisture_->moisture()});
-        columns.scalars.push_back({"dryingRate", &rate});
-    }
+    if (thermal_) thermal_->addColumns(particles_, vf_.map, columns);
     const Foam::Time& runTime = mesh_.time();
     particleOutput_.write(runTime.value(), runTime.timeName(), particles_, columns);
 }

@@ -64,6 +64,25 @@ bool readable(const std::string& path)
     return f.good();
 }
 
+
+// LIGGGHTS' command line: LIGGGHTS 3.8.0 writes to its screen
+// unconditionally in places (crash with -screen none), so its screen output
+// goes to the log file; the variables as -var name value.
+std::vector<std::string> commandLine
+(
+    const std::map<std::string, std::string>& variables,
+    const std::string& logFile
+)
+{
+    std::vector<std::string> args =
+        {"liggghts", "-log", "none", "-screen", logFile, "-echo", "none"};
+    for (const auto& v : variables)
+    {
+        args.insert(args.end(), {"-var", v.first, v.second});
+    }
+    return args;
+}
+
 } // namespace
 
 
@@ -93,14 +112,7 @@ LiggghtsDem::LiggghtsDem
 
     checkIncludes(inputFile, variables);
 
-    // LIGGGHTS 3.8.0 writes to its screen unconditionally in places (crash
-    // with -screen none), so its screen output goes to the log file
-    std::vector<std::string> args =
-        {"liggghts", "-log", "none", "-screen", logFile, "-echo", "none"};
-    for (const auto& v : variables)
-    {
-        args.insert(args.end(), {"-var", v.first, v.second});
-    }
+    std::vector<std::string> args = commandLine(variables, logFile);
     std::vector<char*> argv;
     for (auto& a : args) argv.push_back(&a[0]);
 

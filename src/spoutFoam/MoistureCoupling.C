@@ -28,6 +28,8 @@ const double vapourEnthalpyOffset =
     psy::kHfg0 + (psy::kCpWater - psy::kCpVapour)*273.15;
 
 const Foam::dimensionSet dimSpecificHeat(0, 2, -2, -1, 0);
+const Foam::dimensionSet dimSource(1, -3, -1, 0, 0);          // kg/m3/s
+const Foam::dimensionSet dimPowerDensity(1, -1, -3, 0, 0);    // W/m3
 
 
 Foam::IOobject field
@@ -142,21 +144,9 @@ MoistureCoupling::MoistureCoupling
     ),
     W_(field(mesh, "humidity", true), mesh, Foam::dimensionedScalar(Foam::dimless, Foam::Zero)),
     RH_(field(mesh, "RH", true), mesh, Foam::dimensionedScalar(Foam::dimless, Foam::Zero)),
-    Sv_
-    (
-        field(mesh, "Sv", true), mesh,
-        Foam::dimensionedScalar(Foam::dimDensity/Foam::dimTime, Foam::Zero)
-    ),
-    Hv_
-    (
-        field(mesh, "vapourEnthalpy", false), mesh,
-        Foam::dimensionedScalar(Foam::dimPower/Foam::dimVolume, Foam::Zero)
-    ),
-    cp_
-    (
-        field(mesh, "cpGas", false), mesh,
-        Foam::dimensionedScalar("cpAir", dimSpecificHeat, cpAir)
-    )
+    Sv_(field(mesh, "Sv", true), mesh, Foam::dimensionedScalar(dimSource, Foam::Zero)),
+    Hv_(field(mesh, "vapourEnthalpy", false), mesh, Foam::dimensionedScalar(dimPowerDensity, Foam::Zero)),
+    cp_(field(mesh, "cpGas", false), mesh, Foam::dimensionedScalar("cpAir", dimSpecificHeat, cpAir))
 {
     checkCase();
 }
