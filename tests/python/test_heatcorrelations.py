@@ -65,6 +65,58 @@ class EnergyBalance(unittest.TestCase):
         self.assertAlmostEqual(balance, 50 * 1e-3 / dEp, places=9)
 
 
+def drying_history(leak=0.0, steps=40, dt=0.01):
+    """coupling.csv rows of a drying run that balances, built as the solver
+    keeps its books (docs/DESIGN.md §3.8): in step k the particles lose
+    m_k dt of water, which the gas receives with its enthalpy c_pv T_p
+    (sensible) and h_c (latent); the particles are handed Q_k - m_k L_k
+    during step k + 1 and lose m_k c_w T_p of capacity energy at once; the
+    sorption heat m_k (L_k - h_fg) leaves the books; `leak` kg of water per
+    step vanishes from the gas."""
+    cw, cpv, Tp = 4186.0, 1860.0, 320.0
+    hc_ = 2501e3 + (cw - cpv) * 273.15   # vapour enthalpy c_pv T + hc_, liquid c_w T
+    rows, Eg, Ep, El, Wp, G = [], 100.0, 50.0, 0.0, 1e-3, 2e-4
+    for k in range(steps + 1):
+        q, m, L = 2.0 + 0.01 * k, 1e-6 * (1 + 0.02 * k), 2.45e6 + 100.0 * k
+        hfg = 2501e3 + (cpv - cw) * (Tp - 273.15)
+        vin, vout = 3e-5, 3e-5 + 0.5e-6
+        if k:
+            prev = rows[-1]
+            Ep += (prev['heat to particles [W]'] - prev['latent heat from particles [W]']) * dt
+            Ep -= m * dt * cw * Tp
+            Eg += (5.0 - q + m * cpv * Tp) * dt
+            El += hc_ * (m * dt + (vin - vout) * dt - leak)
+            Wp -= m * dt
+            G += (m + vin - vout) * dt - leak
+        rows.append({'time [s]': k * dt, 'heat to particles [W]': q, 'heat from gas [W]': q,
+                     'gas enthalpy in [W]': 8.0, 'gas enthalpy out [W]': 3.0,
+                     'gas energy [J]': Eg, 'particle energy [J]': Ep,
+                     'particle water [kg]': Wp, 'water lost by particles [kg/s]': m if k else 0.0,
+                     'vapour to gas [kg/s]': m if k else 0.0, 'vapour in [kg/s]': vin,
+                     'vapour out [kg/s]': vout, 'gas vapour [kg]': G,
+                     'latent heat from particles [W]': m * L if k else 0.0,
+                     'sorption heat [W]': m * (L - hfg) if k else 0.0,
+                     'gas latent energy [J]': El, 'latent energy in [W]': hc_ * vin,
+                     'latent energy out [W]': hc_ * vout})
+    return rows
+
+
+class DryingBalances(unittest.TestCase):
+    def test_a_balanced_drying_history_closes_both_balances(self):
+        pairwise, energy = hc.energy_balance(drying_history())
+        self.assertEqual(pairwise, 0.0)
+        self.assertLess(energy, 1e-10)
+        pairwise, water = hc.water_balance(drying_history())
+        self.assertEqual(pairwise, 0.0)
+        self.assertLess(water, 1e-10)
+
+    def test_lost_water_shows_in_both(self):
+        rows = drying_history(leak=1e-9)
+        lost = rows[0]['particle water [kg]'] - rows[-1]['particle water [kg]']
+        self.assertAlmostEqual(hc.water_balance(rows)[1], 40 * 1e-9 / lost, places=6)
+        self.assertGreater(hc.energy_balance(rows)[1], 1e-4)
+
+
 class CouplingLog(unittest.TestCase):
     def test_a_restart_replaces_the_rows_it_repeats(self):
         case = tempfile.mkdtemp()

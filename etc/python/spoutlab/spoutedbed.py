@@ -88,6 +88,32 @@ class Geometry:
             if not (self.Tin > 0 and self.T0 > 0):
                 sys.exit('generate: %s: keys Tin and T0 expected temperatures '
                          'above -273.15 C, got %r and %r' % (path, d['Tin'], d['T0']))
+        self.moisture = d.get('moisture', 'no') in ('yes', 'on', 'true')
+        if self.moisture:
+            self._read_drying(d, path, number)
+
+    # the settings of each drying model in system/spoutedBedDict, passed on
+    # as its <model>Props (coupling/DryingModel.hpp and the models' headers)
+    DRYING_SETTINGS = {'freeWater': (),
+                       'reactionEngineering': ('a', 'b', 'c', 'isotherm'),
+                       'kernelDiffusion': ('D0', 'activationEnergy', 'nShells', 'isotherm')}
+
+    def _read_drying(self, d, path, number):
+        if not self.heat:
+            sys.exit('generate: %s: key moisture expected heat yes (drying needs the '
+                     'particle temperatures)' % path)
+        self.X0 = number('X0', positive=False)
+        self.inletW = number('inletHumidityRatio', positive=False)
+        if self.X0 < 0 or self.inletW < 0:
+            sys.exit('generate: %s: keys X0 and inletHumidityRatio expected 0 or more, '
+                     'got %r and %r' % (path, d['X0'], d['inletHumidityRatio']))
+        self.dryingModel = d.get('dryingModel', 'kernelDiffusion')
+        if self.dryingModel not in self.DRYING_SETTINGS:
+            sys.exit('generate: %s: key dryingModel expected one of %s, got %r'
+                     % (path, ', '.join(sorted(self.DRYING_SETTINGS)), self.dryingModel))
+        self.dryingProps = {k: d[k] for k in self.DRYING_SETTINGS[self.dryingModel] if k in d}
+        self.kernelHeatCapacity = number('kernelHeatCapacity')
+        self.gas.update({'Dv': number('DvGas'), 'pressure': number('pGas')})
 
     def in_spout(self, x, z):
         """The heat-transfer region rule with plates, x and z in mm: between
