@@ -8,7 +8,7 @@
 //   a_w = exp(-exp((E - X)/F) / (t + C))
 //   (d ln a_w/dt)_X = -ln a_w / (t + C)
 // (ASAE D245.5 writes it as a_w = exp(-A/(t + C) exp(-B M)) with
-// A = exp(E/F) = 312.4 and B = 1/F per decimal moisture.) Below the a_w where
+// A = exp(E/F) = 312.3 and B = 1/F per decimal moisture.) Below the a_w where
 // the formula turns negative the equilibrium moisture is taken as 0.
 // No parameters.
 
