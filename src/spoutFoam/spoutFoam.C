@@ -83,6 +83,14 @@ int main(int argc, char *argv[])
         }
         status = 1;
     }
+    catch (const std::exception& err)
+    {
+        // a model outside its domain (e.g. a psychrometric function given a
+        // negative humidity): one line, from the rank that found it
+        std::cerr << "spoutFoam: stopped at t = " << runTime.timeName()
+            << " s: " << err.what() << std::endl;
+        status = 1;
+    }
 
     #include "finishRun.H"
 }
