@@ -203,6 +203,12 @@ class Checks:
         self.rows.append((name, relative_error, 0.0, relative_error, tolerance, ''))
         return relative_error <= tolerance
 
+    def absolute(self, name, value, reference, tolerance, unit):
+        """A difference in the quantity's own unit, |value - reference| <= tolerance."""
+        error = abs(value - reference)
+        self.rows.append((name, value, reference, error, tolerance, unit, 'absolute'))
+        return error <= tolerance
+
     def note(self, text):
         self.notes.append(text)
 
@@ -211,13 +217,16 @@ class Checks:
         lines.append('%-44s %12s %12s %9s %9s  %s' %
                      ('quantity', 'SpoutLab', 'reference', 'error', 'limit', 'result'))
         ok = True
-        for name, value, reference, error, tolerance, unit in self.rows:
+        for name, value, reference, error, tolerance, unit, *absolute in self.rows:
             passed = error <= tolerance
             ok = ok and passed
             label = name + (' [%s]' % unit if unit else '')
-            lines.append('%-44s %12.5g %12.5g %8.2f%% %8.1f%%  %s' %
-                         (label, value, reference, 100 * error, 100 * tolerance,
-                          'PASS' if passed else 'FAIL'))
+            if absolute:
+                limits = '%9.3g %9.3g' % (error, tolerance)
+            else:
+                limits = '%8.2f%% %8.1f%%' % (100 * error, 100 * tolerance)
+            lines.append('%-44s %12.5g %12.5g %s  %s' %
+                         (label, value, reference, limits, 'PASS' if passed else 'FAIL'))
         if self.notes:
             lines.append('')
             lines.extend(self.notes)
