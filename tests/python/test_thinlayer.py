@@ -50,5 +50,27 @@ class Calibration(unittest.TestCase):
         self.assertLess(rms, 1e-6)
 
 
+    def test_kernel_fit_recovers_the_law_of_its_own_model(self):
+        """Curves made by the coupled kernel model itself with a known law
+        (its heating and film included) give that law back."""
+        import numpy as np
+        kernels = {T: k for T, k in tl.singlekernel_conditions().items() if T in (40.0, 80.0)}
+        d0, ea = 3e-4, 43000.0
+
+        curves = {}
+        for T_C, k in kernels.items():
+            times = np.linspace(0.0, 3 * tl.thompson_time(0.05, T_C), 2000)
+            X, _ = k.kernel_diffusion(d0, ea, times[-1], times, nodes=30)
+            curves[T_C] = (-(X - k.Xeq) / (k.X0 - k.Xeq), times)
+
+        def model_curve(mr, T_C):
+            return float(np.interp(-mr, *curves[T_C]))
+        fit_d0, fit_ea, rms = tl.kernel_fit(kernels, (1.5e-4, 41000.0), points=8, nodes=30,
+                                            curve=model_curve)
+        self.assertAlmostEqual(fit_ea / ea, 1.0, places=2)
+        self.assertAlmostEqual(math.log(fit_d0 / d0), 0.0, places=1)
+        self.assertLess(rms, 2e-3)
+
+
 if __name__ == '__main__':
     unittest.main()
