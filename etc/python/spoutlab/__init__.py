@@ -11,8 +11,12 @@ generate, inletVelocity), the spouted bed's protocols and the tests share.
   spoutregime       the spout classifier
   mixing            the degree of mixing (eqs 17-19, Lacey)
   spoutheat         the heat-transfer post-processing of the spouted bed
-  heatcorrelations, packedbedheat, draglaws, bedlayers
+  spoutdrying       the drying post-processing of the spouted bed
+  heatcorrelations, packedbedheat, draglaws, bedlayers, moistair,
+  kerneldrying, packedbeddrying
                     the analytic references of the verification cases
+  thinlayer         Thompson's thin-layer equation and the calibration of
+                    the kernel diffusivity on it
   decomposition     x-slabs for parallel coupled runs
   cli               the argparse front ends of the scripts and protocols
   protocols         the papers' protocols; openfoam_cases/spoutDraftPlates/
@@ -32,6 +36,7 @@ etc/bashrc also puts etc/python on PYTHONPATH, so that the modules with a
 command line run as /usr/bin/python3 -m spoutlab.mixing CASE (and
 spoutlab.decomposition, spoutlab.spoutregime).
 
-Standard library only, except bedlayers and packedbedheat (numpy, scipy:
-Debian's /usr/bin/python3).
+Standard library only, except bedlayers, packedbedheat, moistair,
+kerneldrying, packedbeddrying and thinlayer's fits (numpy, scipy: Debian's
+/usr/bin/python3).
 """

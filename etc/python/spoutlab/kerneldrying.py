@@ -2,10 +2,8 @@
 from the published equations for the evaluate scripts (not taken from the
 solver): the references the drying models are checked against.
 
-Moist air (ASHRAE Handbook - Fundamentals, ch. 1): Hyland and Wexler's
-saturation pressure over water, W = 0.621945 p_w/(p - p_w), vapour density
-p_w/(R_v T) with R_v = 287.042/0.621945, h_fg = 2501e3 + (1860 - 4186) t, and
-the thermodynamic wet bulb of ASHRAE's eq (35).
+Moist air from spoutlab.moistair (ASHRAE Handbook - Fundamentals, ch. 1),
+and the thermodynamic wet bulb of ASHRAE's eq (35).
 Shelled corn: the modified Henderson isotherm of ASAE D245.5,
 1 - a_w = exp(-A (t + C) M^B), and the heat of vaporisation of its water by
 Clausius-Clapeyron, h_fg + R_v T^2 (d ln a_w/dT)_X (here by a central
@@ -26,39 +24,10 @@ import numpy as np
 from scipy.integrate import solve_ivp
 from scipy.optimize import brentq
 
+from spoutlab import moistair
+
 GAS_CONSTANT = 8.314462618          # J/(mol K), CODATA 2018
-DRY_AIR_GAS_CONSTANT = 287.042      # J/(kg K), ASHRAE
-MOLAR_RATIO = 0.621945              # M_w/M_a, ASHRAE
-VAPOUR_GAS_CONSTANT = DRY_AIR_GAS_CONSTANT / MOLAR_RATIO
-CP_VAPOUR, CP_WATER = 1860.0, 4186.0
 HENDERSON = (8.6541e-5, 1.8634, 49.810)   # A, B, C of ASAE D245.5 (corn)
-
-
-def saturation_pressure(T):
-    """p_ws [Pa] over liquid water at T [K] (Hyland and Wexler 1983)."""
-    c8, c9, c10, c11, c12, c13 = (-5.8002206e3, 1.3914993, -4.8640239e-2,
-                                  4.1764768e-5, -1.4452093e-8, 6.5459673)
-    return math.exp(c8 / T + c9 + T * (c10 + T * (c11 + T * c12)) + c13 * math.log(T))
-
-
-def saturated_vapour_density(T):
-    return saturation_pressure(T) / (VAPOUR_GAS_CONSTANT * T)
-
-
-def vapour_pressure(W, p):
-    return p * W / (MOLAR_RATIO + W)
-
-
-def vapour_density(T, W, p):
-    return vapour_pressure(W, p) / (VAPOUR_GAS_CONSTANT * T)
-
-
-def relative_humidity(T, W, p):
-    return vapour_pressure(W, p) / saturation_pressure(T)
-
-
-def free_water_latent_heat(T):
-    return 2501e3 + (CP_VAPOUR - CP_WATER) * (T - 273.15)
 
 
 def psychrometric_wet_bulb(T, W, p):
@@ -66,17 +35,17 @@ def psychrometric_wet_bulb(T, W, p):
     t = T - 273.15
 
     def residual(ts):
-        ws = MOLAR_RATIO * saturation_pressure(ts + 273.15) / (p - saturation_pressure(ts + 273.15))
+        ws = moistair.saturation_humidity_ratio(ts + 273.15, p)
         return ((2501 - 2.326 * ts) * ws - 1.006 * (t - ts)) / (2501 + 1.86 * t - 4.186 * ts) - W
-    return brentq(residual, -20.0, t, xtol=1e-10) + 273.15
+    return brentq(residual, 0.0, t, xtol=1e-10) + 273.15
 
 
 def film_wet_bulb(T, W, p, h, km):
     """The particle temperature [K] where the film laws balance,
     h (T_g - T_p) = k_m h_fg(T_p) (rho_v,sat(T_p) - rho_v,inf)."""
-    far = vapour_density(T, W, p)
-    return brentq(lambda Tp: h * (T - Tp) - km * free_water_latent_heat(Tp)
-                  * (saturated_vapour_density(Tp) - far), 250.0, T, xtol=1e-12)
+    far = moistair.vapour_density(T, W, p)
+    return brentq(lambda Tp: h * (T - Tp) - km * moistair.latent_heat(Tp)
+                  * (moistair.saturation_vapour_density(Tp) - far), 273.15, T, xtol=1e-12)
 
 
 def water_activity(X, T):
@@ -95,7 +64,7 @@ def equilibrium_moisture(rh, T):
 def grain_latent_heat(X, T, dT=1e-3):
     """Heat [J/kg] to evaporate the kernel's water at X and T (Clausius-Clapeyron)."""
     slope = (math.log(water_activity(X, T + dT)) - math.log(water_activity(X, T - dT))) / (2 * dT)
-    return free_water_latent_heat(T) + VAPOUR_GAS_CONSTANT * T * T * slope
+    return moistair.latent_heat(T) + moistair.R_VAPOUR * T * T * slope
 
 
 def film_coefficients(model, eps, us, d, gas):
@@ -117,26 +86,26 @@ class Kernel:
         self.d, self.dry_mass, self.cd, self.X0, self.T0 = d, dry_mass, cd, X0, T0
         self.Tg, self.W, self.p, self.h, self.km = Tg, W, p, h, km
         self.area = math.pi * d * d
-        self.far = vapour_density(Tg, W, p)
-        self.rh = relative_humidity(Tg, W, p)
+        self.far = moistair.vapour_density(Tg, W, p)
+        self.rh = moistair.relative_humidity(Tg, W, p)
         self.Xeq = equilibrium_moisture(self.rh, Tg)
 
     def heating(self, X, T, mdot, latent):
         """dT/dt of the lumped kernel."""
-        return (self.h * self.area * (self.Tg - T) - mdot * latent) / (self.dry_mass * (self.cd + X * CP_WATER))
+        return (self.h * self.area * (self.Tg - T) - mdot * latent) / (self.dry_mass * (self.cd + X * moistair.CP_WATER))
 
     def free_water(self, t_end, times):
         def rhs(t, y):
             X, T = y
-            mdot = self.km * self.area * (saturated_vapour_density(T) - self.far) if X > 0 else 0.0
-            return [-mdot / self.dry_mass, self.heating(X, T, mdot, free_water_latent_heat(T))]
+            mdot = self.km * self.area * (moistair.saturation_vapour_density(T) - self.far) if X > 0 else 0.0
+            return [-mdot / self.dry_mass, self.heating(X, T, mdot, moistair.latent_heat(T))]
         return self._integrate(rhs, [self.X0, self.T0], t_end, times)
 
     def reaction_engineering(self, a, b, c, t_end, times):
         def rhs(t, y):
             X, T = y
             f = a * math.exp(-b * max(0.0, X - self.Xeq) ** c)
-            surface = self.rh ** (f * self.Tg / T) * saturated_vapour_density(T)
+            surface = self.rh ** (f * self.Tg / T) * moistair.saturation_vapour_density(T)
             mdot = self.km * self.area * (surface - self.far)
             return [-mdot / self.dry_mass, self.heating(X, T, mdot, grain_latent_heat(X, T))]
         return self._integrate(rhs, [self.X0, self.T0], t_end, times)
@@ -153,7 +122,7 @@ class Kernel:
 
         def surface_moisture(Xn, T, D):
             g = rho_d * D / (0.5 * dr)          # kg/m2/s per unit of X through the half cell
-            rho_sat = saturated_vapour_density(T)
+            rho_sat = moistair.saturation_vapour_density(T)
             film = lambda Xs: self.km * (water_activity(Xs, T) * rho_sat - self.far) - g * (Xn - Xs)
             if film(0.0) >= 0:
                 return 0.0

@@ -105,7 +105,7 @@ def singlekernel_conditions(case=None):
     """The kernels of openfoam_cases/singleKernel (system/singleKernelDict) in
     each air of its airTable: {T [C]: kerneldrying.Kernel}."""
     import os
-    from spoutlab import foamfile, kerneldrying
+    from spoutlab import foamfile, kerneldrying, moistair
     from spoutlab.spoutedbed import read_dict
     case = case or os.path.join(os.environ.get('SPOUTLAB_DIR', '../..'), 'openfoam_cases', 'singleKernel')
     path = os.path.join(case, 'system', 'singleKernelDict')
@@ -117,7 +117,7 @@ def singlekernel_conditions(case=None):
     kernels = {}
     for T, rho, mu, cp, kappa in foamfile.parse_value(v['airTable'], path, 'airTable'):
         gas = {'rho': rho, 'mu': mu, 'Cp': cp, 'kappa': kappa,
-               'Dv': 0.2178e-4 * ((T + 273.15) / 273.15) ** 1.81 * 101325 / p}
+               'Dv': moistair.vapour_diffusivity(T + 273.15, p)}
         h, km = kerneldrying.film_coefficients(model, eps, number('velocity'), d, gas)
         kernels[T] = kerneldrying.Kernel(d, rhop * math.pi * d ** 3 / 6 / (1 + X0),
                                          number('kernelHeatCapacity'), X0, number('Tp0') + 273.15,
