@@ -12,13 +12,13 @@ import tempfile
 import unittest
 
 sys.path.insert(0, os.path.join(os.environ.get('SPOUTLAB_DIR', '../..'), 'etc', 'python'))
-from spoutlab.protocols import circulation, heattransfer, minimumspouting  # noqa: E402
+from spoutlab.protocols import circulation, drying, heattransfer, minimumspouting  # noqa: E402
 from spoutlab.protocols import mixing, profiles, results, velocitymaps  # noqa: E402
 
 REPOSITORY = os.path.abspath(os.environ.get('SPOUTLAB_DIR', '../..'))
 COMMANDS = ['generate', 'inletVelocity', 'evaluate'] + [
     os.path.join('protocols', p) for p in ('minimumSpouting', 'circulation', 'profiles',
-                                          'velocityMaps', 'heatTransfer', 'results',
+                                          'velocityMaps', 'heatTransfer', 'drying', 'results',
                                           'mixing')]
 CASE = None
 
@@ -119,10 +119,13 @@ class Defaults(unittest.TestCase):
         o = heattransfer.options([])
         self.assertEqual((o['u'], o['time'], o['average'], o['write'], o['n'], o['np']),
                          (2.0, 6.0, 1.8, 0.15, None, 1))
+        o = drying.options(['dryingModel=freeWater'])
+        self.assertEqual((o['u'], o['time'], o['average'], o['write'], o['part'], o['n'], o['np'],
+                          o['overrides']), (2.0, 6.0, 1.8, 0.15, 'both', None, 1, ['dryingModel=freeWater']))
         _, a = results.parse(['ums', 'circ', '--heat', 'h', '--noplates', 'a',
-                              '--noplates', 'b', '-o', 'out.md', '--mixing', 'm'])
-        self.assertEqual((a.cases, a.heat, a.noplates, a.maps, a.mixing, a.out),
-                         (['ums', 'circ'], 'h', ['a', 'b'], None, ['m'], 'out.md'))
+                              '--noplates', 'b', '-o', 'out.md', '--mixing', 'm', '--drying', 'd'])
+        self.assertEqual((a.cases, a.heat, a.noplates, a.maps, a.mixing, a.drying, a.out),
+                         (['ums', 'circ'], 'h', ['a', 'b'], None, ['m'], 'd', 'out.md'))
 
     def test_mixing(self):
         a = mixing.parse(['-j', '2', 'e=0.8'])

@@ -30,8 +30,9 @@ from spoutlab import spoutheat
 PAPER = {'Re_spout': 5690, 'Re_downcomer': 130}
 
 
-def options(argv):
-    p = cli.parser('heatTransfer', __doc__)
+def options(argv, name='heatTransfer', doc=__doc__, extra=None):
+    """The run's options; extra(p) adds a protocol's own."""
+    p = cli.parser(name, doc)
     p.add_argument('--u', type=float, default=2.0, metavar='U',
                    help='superficial velocity [m/s] (default %(default)s)')
     p.add_argument('--time', type=float, default=6.0, metavar='T',
@@ -40,6 +41,8 @@ def options(argv):
                    help='averaging window at the end [s] (default %(default)s)')
     p.add_argument('--write', type=float, default=0.15, metavar='T',
                    help='write interval [s] (default %(default)s)')
+    if extra:
+        extra(p)
     p.add_argument('-n', type=int, help='particles (default: system/spoutedBedDict)')
     p.add_argument('-np', type=int, default=1, metavar='RANKS', help='MPI ranks')
     cli.add_overrides(p)
@@ -60,19 +63,21 @@ def setting(entry, value):
                            'system/controlDict'], stdout=subprocess.DEVNULL)
 
 
-def run(o, work):
-    """Prepare (once) and run or continue the case in work."""
+def run(o, work, name='heatTransfer', extra=()):
+    """Prepare (once) and run or continue the case in work, with heat and
+    the `extra` overrides of system/spoutedBedDict."""
     if not os.path.isdir(work):
         os.makedirs('runs', exist_ok=True)
         shutil.copytree('.', work, ignore=shutil.ignore_patterns(
             'runs', 'processor*', 'DEM', 'particles', 'postProcessing', 'log.*',
-            '[0-9]*', '*.png', '*.csv', 'heat.txt'), symlinks=True)
+            '[0-9]*', '*.png', '*.csv', '*.txt'), symlinks=True)
         shutil.copytree('0.orig', os.path.join(work, '0.orig'), dirs_exist_ok=True)
     here = os.getcwd()
     inside(work)
     try:
-        overrides = ['heat=yes'] + o['overrides'] + (['nParticles=%d' % o['n']] if o['n'] else [])
-        spoutedbed.prepare_case(overrides, 'heatTransfer')
+        overrides = (['heat=yes'] + list(extra) + o['overrides']
+                     + (['nParticles=%d' % o['n']] if o['n'] else []))
+        spoutedbed.prepare_case(overrides, name)
         subprocess.check_call(['./inletVelocity', '%g' % o['u']])
         setting('endTime', '%g' % o['time'])
         dt = foamfile.scalar('system/controlDict', 'deltaT')
@@ -80,13 +85,13 @@ def run(o, work):
         setting('functions.averages.timeStart', '%g' % (o['time'] - o['average']))
         if (spoutedbed.last_time('log.spoutFoam') or 0.0) < o['time'] - 1e-3:
             t0 = time.time()
-            spoutedbed.run_spoutfoam(o['time'], o['np'], 'heatTransfer')
+            spoutedbed.run_spoutfoam(o['time'], o['np'], name)
             with open('log.wallTime', 'a') as f:
                 f.write('%.0f\n' % (time.time() - t0))
         with open('log.evaluate', 'w') as log:
             if subprocess.call(['./evaluate', '--window', '%g' % o['average']],
                                stdout=log, stderr=subprocess.STDOUT) != 0:
-                sys.exit('heatTransfer: evaluate failed, see %s/log.evaluate' % work)
+                sys.exit('%s: evaluate failed, see %s/log.evaluate' % (name, work))
     finally:
         inside(here)
 

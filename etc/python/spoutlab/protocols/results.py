@@ -472,12 +472,72 @@ def heat_section(case):
     return rows, keys, figures
 
 
+def drying_section(case):
+    """The dryer from protocols/drying's drying.json: the single-kernel checks
+    and the bed."""
+    import json
+    r = json.load(open(os.path.join(case, 'drying.json')))
+    k, b = r.get('kernel', {}), r.get('bed')
+    rows, keys = [], []
+    if 'wetBulb' in k:
+        w = k['wetBulb']
+        settings = ('one free-water kernel at rest in air at %g C, W %g, %g m/s (singleKernel)'
+                    % (w['air_temperature_C'], w['humidity_ratio'], w['velocity']))
+        rows += [('film-law wet bulb, free-water kernel', '%.4f K (error %.1e K)'
+                  % (w['wetbulb_film_K'], w['wetbulb_err_K']), 'psychrometric %.2f K'
+                  % w['wetbulb_thermodynamic_K'], settings, ''),
+                 ('film law vs psychrometric wet bulb', '%+.2f K (%+.2f K at Le = 1)'
+                  % (w['wetbulb_film_K'] - w['wetbulb_thermodynamic_K'],
+                     w['wetbulb_lewis1_K'] - w['wetbulb_thermodynamic_K']), '', settings, '')]
+        keys.append(('dry.wetbulb_err_K', '%.3g' % w['wetbulb_err_K'], 'K', '',
+                     'free-water kernel at rest vs the film-law balance solved in the test; '
+                     'psychrometric wet bulb %.2f K' % w['wetbulb_thermodynamic_K']))
+    for T in (40, 60, 80):
+        t = k.get('thinLayer%dC' % T)
+        if t:
+            settings = ('one kernel (kernel diffusion, D_0 and E_a calibrated on the same equation), '
+                        'air at %d C, W %g, %g m/s' % (T, t['humidity_ratio'], t['velocity']))
+            rows.append(('time to MR 0.5, %d C' % T, '%+.1f %%' % (100 * t['thinlayer_t50_rel']),
+                         'Thompson, Peart and Foster 1968 (20 %)', settings, ''))
+            keys.append(('dry.thinlayer_t50_rel_%dC' % T, '%.3g' % t['thinlayer_t50_rel'], '', '0',
+                         'SpoutLab / Thompson et al. (1968) - 1; calibration: sphere alone %+.3f'
+                         % t.get('thinlayer_sphere_rel', float('nan'))))
+    if b:
+        settings = ('%d particles, u_s = %g m/s, inlet %.0f C (W %g), X_0 %.4g, %g s; averages '
+                    'over the last %g s' % (b['particles'], b['u_s'], b['T_in'] - 273.15, b['W_in'],
+                                            b['X0'], b['time'], b['average']))
+        wall = '%.2f h' % (b['wall_s'] / 3600)
+        rows += [('moisture at the end, spout / downcomer', '%.4f / %.4f kg/kg dry solid'
+                  % (b['X_spout'], b['X_downcomer']), '', settings, wall),
+                 ('drying rate', '%.4g kg/s' % b['rate'], '', settings, wall),
+                 ('outlet air', '%.2f K, RH %.2f %%' % (b['T_outlet'], 100 * b['RH_outlet']), '',
+                  settings, wall),
+                 ('share of the heat given that evaporates water', '%.1f %%'
+                  % (100 * b['evaporation_share']), '', settings, wall),
+                 ('water / energy balance residual', '%.1e / %.1e' % (b['water_balance'],
+                                                                     b['energy_balance']),
+                  'closes', settings, wall)]
+        keys += [('dry.rate_kg_s', '%.4g' % b['rate'], 'kg/s', '', settings),
+                 ('dry.evaporation_heat_share', '%.4g' % b['evaporation_share'], '', '',
+                  'latent heat / heat the gas gives the particles; ' + settings),
+                 ('dry.T_outlet_K', '%.6g' % b['T_outlet'], 'K', '', settings),
+                 ('dry.RH_outlet', '%.4g' % b['RH_outlet'], '', '', settings),
+                 ('dry.water_balance_rel', '%.3g' % b['water_balance'], '', '0',
+                  'whole-run residual / water the particles lost'),
+                 ('dry.energy_balance_rel', '%.3g' % b['energy_balance'], '', '0',
+                  'whole-run residual, latent heat included')]
+    pngs = [(f, 'drying_' + f[len('drying_'):]) for f in sorted(os.listdir(case))
+            if f.startswith('drying_') and f.endswith('.png')]
+    return rows, keys, pngs
+
+
 SECTIONS = [
     ('ums', 'Minimum spouting (section 4.1, Figs 2-3)'),
     ('friction', 'Circulation rate vs friction at u_ms (section 4.4, eq 16, Fig 7)'),
     ('velocity', 'Circulation rate vs gas velocity (section 4.4, eq 15, Fig 6)'),
     ('profiles', 'Spout and downcomer profiles (sections 4.2-4.3, Figs 4-5)'),
     ('heat', 'Gas-to-particle heat transfer (section 4.7, Figs 11-12)'),
+    ('drying', 'Drying: one kernel, and the bed as a dryer at the section 4.7 conditions'),
     ('noplates10k', 'Without draft plates, 10 000 particles (no-draft paper, Fig 2a)'),
     ('noplates26k', 'Without draft plates, 26 000 particles (no-draft paper, Fig 2b)'),
     ('maps', 'Gas and particle velocity without draft plates (no-draft paper, Figs 3-4)'),
@@ -490,6 +550,8 @@ CSV_HEADER = ['key', 'value', 'unit', 'paper_value', 'note']
 def section_of_key(key):
     if key.startswith(('heat.', 'noplates10k.', 'noplates26k.', 'maps.')):
         return key.split('.')[0]
+    if key.startswith('dry.'):
+        return 'drying'
     if key.startswith('mixing'):
         return 'mixing'
     if key.startswith('draft.Ws_He'):
@@ -500,7 +562,7 @@ def section_of_key(key):
 
 
 FIGURES = {'ums': ('fig2_', 'fig3_'), 'friction': ('fig7_',), 'velocity': ('fig6_',),
-           'profiles': ('fig4_5_',), 'heat': ('fig11_', 'fig12_'),
+           'profiles': ('fig4_5_',), 'heat': ('fig11_', 'fig12_'), 'drying': ('drying_',),
            'noplates10k': ('noplates10k_',), 'noplates26k': ('noplates26k_',),
            'maps': ('noplates_maps_',), 'mixing': ('mixing_',)}
 
@@ -513,7 +575,7 @@ def remove_figures(section, figure_dir):
                 os.remove(os.path.join(figure_dir, f))
 
 
-def build(ums, circ, heat, figure_dir, noplates=(), maps=None, mixing=()):
+def build(ums, circ, heat, figure_dir, noplates=(), maps=None, mixing=(), drying=None):
     """section -> (table rows, results.csv rows, figure names) for the runs given."""
     new = {}
 
@@ -564,6 +626,9 @@ def build(ums, circ, heat, figure_dir, noplates=(), maps=None, mixing=()):
     if heat:
         rows, keys, pngs = heat_section(heat)
         new['heat'] = (rows, keys, figures('heat', heat, pngs))
+    if drying:
+        rows, keys, pngs = drying_section(drying)
+        new['drying'] = (rows, keys, figures('drying', drying, pngs))
     for case in noplates:
         name, rows, keys, pngs = noplates_section(case)
         if name not in FIGURES:
@@ -624,6 +689,8 @@ def parse(argv):
                         'and profiles ran')
     p.add_argument('--heat', metavar='HEAT_DIR',
                    help='a case copy where protocols/heatTransfer ran (heat.csv)')
+    p.add_argument('--drying', metavar='DRYING_DIR',
+                   help='a case copy where protocols/drying ran (drying.json)')
     p.add_argument('--noplates', action='append', default=[], metavar='UMS_DIR',
                    help='a case copy where minimumSpouting --vessel no-plates ran, with '
                         '10 000 or 26 000 particles (repeat for both)')
@@ -648,13 +715,13 @@ def main(argv):
     p, a = parse(argv)
     out, cases, heat, noplates, maps, mixing = (a.out, a.cases, a.heat, a.noplates, a.maps,
                                                 a.mixing)
-    if not cases and not heat and not noplates and not maps and not mixing:
+    if not cases and not heat and not noplates and not maps and not mixing and not a.drying:
         p.print_help()
         return 2
     ums = cases[0] if cases else None
     circ = cases[1] if len(cases) > 1 else None
     new = build(ums, circ, heat, os.path.join(os.path.dirname(out), 'figures'), noplates, maps,
-                mixing)
+                mixing, a.drying)
     old = old_sections(out)
     lines = ['# SpoutLab vs the source papers', '',
              'Written by `openfoam_cases/spoutDraftPlates/protocols/results` from the protocol',
