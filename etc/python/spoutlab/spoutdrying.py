@@ -55,13 +55,13 @@ def plot_history(rows, png):
         for r in rows:
             f.write('%.6g,%.8g,%.8g,%.8g,%.8g,%.8g\n' % r)
     return sc.plot(png, '''
-set title "Particle moisture X (dry basis); band: 5-95 %% of the particles"
+set title "Particle moisture X (dry basis); band: 5-95 % of the particles"
 set xlabel "time [s]"
 set ylabel "moisture [kg water/kg dry solid]"
-set key top right
+set key bottom left
 set grid
 set datafile separator ","
-plot "moistureHistory.csv" skip 1 using 1:5:6 with filledcurves fs transparent solid 0.2 title "5-95 %%", \\
+plot "moistureHistory.csv" skip 1 using 1:5:6 with filledcurves fs transparent solid 0.2 title "5-95 %", \\
      "moistureHistory.csv" skip 1 using 1:2 with linespoints lw 2 title "spout", \\
      "moistureHistory.csv" skip 1 using 1:3 with linespoints lw 2 title "downcomer", \\
      "moistureHistory.csv" skip 1 using 1:4 with lines dt 2 title "all particles"
