@@ -16,6 +16,8 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(1, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'python'))
+from spoutlab import cli  # noqa: E402  (the one-line bad-option parser)
 from vtkreaders import ReadError, read_collection, read_xml  # noqa: E402
 
 from vtkmodules.vtkFiltersSources import vtkSphereSource  # noqa: E402
@@ -47,7 +49,7 @@ def numbers(kind, separator, form):
 
 
 def arguments(argv):
-    p = argparse.ArgumentParser(prog='particles.py', description=__doc__.splitlines()[0])
+    p = cli.Parser(prog='particles.py', description=__doc__.splitlines()[0])
     p.add_argument('file', help='particles.pvd or one particles_<time>.vtp')
     p.add_argument('--array', default='velocity', help='point array to colour by (default velocity)')
     p.add_argument('--component', default='Magnitude', choices=COMPONENTS,

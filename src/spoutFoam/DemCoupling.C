@@ -67,6 +67,8 @@ DemCoupling::DemCoupling
     particleOutput_(mesh.time().globalPath()/"particles"),
     fields_(mesh)
 {
+    checkStartField(U_);   // before anything runs: NaN or Inf read
+    checkStartField(p_);
     readControls();
     selectModels();
     startDem();
@@ -211,7 +213,7 @@ void DemCoupling::evolve()
     dem_->run(couplingInterval_);
     vf_ = mapParticles();
     exchange(vf_);
-    if (thermal_) thermal_->dry(*dem_, particles_, vf_.map, g_);
+    if (thermal_) thermal_->dry(*dem_, particles_, vf_.map, g_, guards_);
 }
 
 

@@ -6,6 +6,7 @@
 #include "FoamParameters.H"
 #include "InputError.hpp"
 #include "OStringStream.H"
+#include "RunGuards.H"
 
 #include <algorithm>
 #include <cmath>
@@ -154,6 +155,7 @@ HeatCoupling::HeatCoupling
 
 void HeatCoupling::checkCase() const
 {
+    checkStartField(T_);
     const double Tmin = Foam::gMin(T_.primitiveField());
     double TbMin = 1e300;
     forAll(T_.boundaryField(), patchi)

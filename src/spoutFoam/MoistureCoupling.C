@@ -7,6 +7,7 @@
 #include "InputError.hpp"
 #include "MoistAir.hpp"
 #include "Psychrometrics.hpp"
+#include "RunGuards.H"
 #include "ShortNumbers.H"
 
 #include <mpi.h>
@@ -154,6 +155,7 @@ MoistureCoupling::MoistureCoupling
 
 void MoistureCoupling::checkCase() const
 {
+    checkStartField(Y_);
     const std::string file = mesh_.time().timeName() + "/H2O";
     double lo = Foam::gMin(Y_.primitiveField()), hi = Foam::gMax(Y_.primitiveField());
     forAll(Y_.boundaryField(), patchi)
@@ -238,18 +240,22 @@ void MoistureCoupling::startParticles(LiggghtsDem& dem, const Foam::volScalarFie
     checkSaturation(T);
     updateHumidity(T);
     const std::vector<std::size_t> fresh = dem.localMoisture(kernels_);
-    long negative = 0;
+    long bad[2] = {0, 0};   // negative, not finite
     for (const std::size_t i : fresh)
     {
-        if (!(kernels_.moisture[i] >= 0)) ++negative;
+        const double X = kernels_.moisture[i];
+        if (!std::isfinite(X)) ++bad[1];
+        else if (X < 0) ++bad[0];
         else exchange_.initialise(kernels_, i);
     }
-    MPI_Allreduce(MPI_IN_PLACE, &negative, 1, MPI_LONG, MPI_SUM, MPI_COMM_WORLD);
-    if (negative > 0)
+    MPI_Allreduce(MPI_IN_PLACE, bad, 2, MPI_LONG, MPI_SUM, MPI_COMM_WORLD);
+    if (bad[0] + bad[1] > 0)
     {
         throw InputError
         (
-            std::to_string(negative) + " particle(s) with a negative moisture "
+            std::to_string(bad[0] + bad[1]) + " particle(s) with a "
+          + (bad[1] ? (bad[0] ? "negative or non-finite" : "non-finite") : "negative")
+          + " moisture "
             "X (LIGGGHTS 'fix property/atom moisture'): expected kg water per "
             "kg dry solid, 0 or more"
         );
@@ -265,7 +271,8 @@ void MoistureCoupling::dryParticles
     const ParticleCellMap& map,
     const HeatCellCoefficients& cells,
     const Foam::volScalarField& Tgas,
-    const Vec3& g
+    const Vec3& g,
+    const RunGuards& guards
 )
 {
     const std::vector<std::size_t> fresh = dem.localMoisture(kernels_);
@@ -277,6 +284,7 @@ void MoistureCoupling::dryParticles
         locator_, particles, map, MoistureCellFields{T, W, cells.km}, kernels_,
         mesh_.time().deltaTValue()
     );
+    guards.checkParticles("moisture", kernels_.moisture, particles);
     dem.setMoisture(kernels_, g);
     forAll(Sv_, i)
     {

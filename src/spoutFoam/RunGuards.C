@@ -3,6 +3,8 @@
 \*---------------------------------------------------------------------------*/
 #include "RunGuards.H"
 
+#include "OStringStream.H"
+
 #include "DemTimeStep.hpp"
 #include "InputError.hpp"
 #include "RankGather.H"
@@ -29,7 +31,86 @@ bool finite(const Vec3& v)
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
+template<class Type>
+std::string text(const Type& value)
+{
+    Foam::OStringStream os;
+    os << value;
+    return os.str();
+}
+
+std::string where(const Foam::vector& c)
+{
+    std::string at = format(Vec3{c.x(), c.y(), c.z()});
+    if (Foam::Pstream::parRun())
+    {
+        at += " of processor " + std::to_string(Foam::Pstream::myProcNo());
+    }
+    return at;
+}
+
 } // namespace
+
+
+std::string foundOnAnyRank(const std::string& found)
+{
+    int rank = 0, nProcs = 1;
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    MPI_Comm_size(MPI_COMM_WORLD, &nProcs);
+    int first = found.empty() ? nProcs : rank;
+    MPI_Allreduce(MPI_IN_PLACE, &first, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD);
+    if (first == nProcs) return std::string();
+
+    int n = int(found.size());
+    MPI_Bcast(&n, 1, MPI_INT, first, MPI_COMM_WORLD);
+    std::string what(found);
+    what.resize(std::size_t(n));
+    MPI_Bcast(&what[0], n, MPI_CHAR, first, MPI_COMM_WORLD);
+    return what;
+}
+
+
+template<class Type>
+void checkStartField
+(
+    const Foam::GeometricField<Type, Foam::fvPatchField, Foam::volMesh>& field
+)
+{
+    const Foam::fvMesh& mesh = field.mesh();
+    std::string found;
+    const Foam::Field<Type>& cells = field.primitiveField();
+    forAll(cells, celli)
+    {
+        if (finite(cells[celli])) continue;
+        found = "got " + text(cells[celli]) + " in cell " + std::to_string(celli)
+              + " " + where(mesh.C()[celli]);
+        break;
+    }
+    forAll(field.boundaryField(), patchi)
+    {
+        const Foam::fvPatchField<Type>& values = field.boundaryField()[patchi];
+        if (!found.empty()) break;
+        if (values.coupled()) continue;   // the neighbour's cells, checked there
+        forAll(values, facei)
+        {
+            if (finite(values[facei])) continue;
+            found = "got " + text(values[facei]) + " on patch "
+                  + values.patch().name() + ", face " + std::to_string(facei) + " "
+                  + where(mesh.Cf().boundaryField()[patchi][facei]);
+            break;
+        }
+    }
+    found = foundOnAnyRank(found);
+    if (found.empty()) return;
+    throw InputError
+    (
+        std::string(mesh.time().timeName()) + "/" + field.name()
+      + ": expected finite values, " + found
+    );
+}
+
+template void checkStartField(const Foam::volScalarField&);
+template void checkStartField(const Foam::volVectorField&);
 
 
 RunGuards::RunGuards(const Foam::fvMesh& mesh)
@@ -41,18 +122,8 @@ RunGuards::RunGuards(const Foam::fvMesh& mesh)
 
 void RunGuards::stopIfAnyRank(const std::string& found) const
 {
-    int rank = 0, nProcs = 1;
-    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-    MPI_Comm_size(MPI_COMM_WORLD, &nProcs);
-    int first = found.empty() ? nProcs : rank;
-    MPI_Allreduce(MPI_IN_PLACE, &first, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD);
-    if (first == nProcs) return;
-
-    int n = int(found.size());
-    MPI_Bcast(&n, 1, MPI_INT, first, MPI_COMM_WORLD);
-    std::string what(found);
-    what.resize(std::size_t(n));
-    MPI_Bcast(&what[0], n, MPI_CHAR, first, MPI_COMM_WORLD);
+    const std::string what = foundOnAnyRank(found);
+    if (what.empty()) return;
     throw InputError
     (
         what + " at t = " + mesh_.time().timeName() + " s; nothing of this "
@@ -69,18 +140,27 @@ void RunGuards::checkField
 ) const
 {
     std::string found;
+    // a boundary that imposes its value (an inlet) first: the likely origin
+    forAll(field.boundaryField(), patchi)
+    {
+        const Foam::fvPatchField<Type>& values = field.boundaryField()[patchi];
+        if (values.coupled() || values.assignable() || !found.empty()) continue;
+        forAll(values, facei)
+        {
+            if (finite(values[facei])) continue;
+            found = "non-finite " + field.name() + " on patch " + values.patch().name()
+                  + ", face " + std::to_string(facei) + " "
+                  + where(mesh_.Cf().boundaryField()[patchi][facei]);
+            break;
+        }
+    }
     const Foam::Field<Type>& values = field.primitiveField();
     forAll(values, celli)
     {
+        if (!found.empty()) break;
         if (finite(values[celli])) continue;
-        const Foam::vector& c = mesh_.C()[celli];
-        found = "non-finite " + field.name() + " in cell "
-              + std::to_string(celli) + " " + format(Vec3{c.x(), c.y(), c.z()});
-        if (Foam::Pstream::parRun())
-        {
-            found += " of processor " + std::to_string(Foam::Pstream::myProcNo());
-        }
-        break;
+        found = "non-finite " + field.name() + " in cell " + std::to_string(celli)
+              + " " + where(mesh_.C()[celli]);
     }
     stopIfAnyRank(found);
 }
@@ -94,9 +174,13 @@ void RunGuards::checkParticles(const std::vector<Particle>& particles) const
     std::string found;
     for (const Particle& p : particles)
     {
-        if (finite(p.x) && finite(p.v)) continue;
-        found = "non-finite position or velocity of particle " + std::to_string(p.id)
-              + " (x " + format(p.x) + ", v " + format(p.v) + ")";
+        if (finite(p.x) && finite(p.v) && finite(p.radius) && finite(p.temperature))
+        {
+            continue;
+        }
+        found = "non-finite position, velocity, radius or temperature of particle "
+              + std::to_string(p.id) + " (x " + format(p.x) + ", v " + format(p.v)
+              + ", r " + format(p.radius) + " m, T " + format(p.temperature) + " K)";
         break;
     }
     stopIfAnyRank(found);
@@ -220,7 +304,7 @@ void RunGuards::checkCourant
     const Foam::scalar Co =
         0.5*Foam::gMax(sumPhi/mesh_.V().field())*mesh_.time().deltaTValue();
     Foam::Info<< "Courant number (interstitial) max: " << Co << Foam::endl;
-    if (Co > maxCo)
+    if (!(Co <= maxCo))   // a NaN too
     {
         throw InputError
         (

@@ -95,11 +95,12 @@ void ThermalCoupling::dry
     LiggghtsDem& dem,
     const std::vector<Particle>& particles,
     const ParticleCellMap& map,
-    const Vec3& g
+    const Vec3& g,
+    const RunGuards& guards
 )
 {
     if (!moisture_) return;
-    moisture_->dryParticles(dem, particles, map, heat_->cells(), heat_->T(), g);
+    moisture_->dryParticles(dem, particles, map, heat_->cells(), heat_->T(), g, guards);
 }
 
 
@@ -129,10 +130,16 @@ void ThermalCoupling::transfer
     heatFlux_ = heat_->particleHeatFlux(particles, map);
     guards.checkParticles("heat flux", heatFlux_, particles);
     // with drying, less the latent heat and for the wet kernel's capacity
-    dem.setHeatFluxes
-    (
-        moisture_ ? moisture_->liggghtsHeatFluxes(dem, heatFlux_) : heatFlux_
-    );
+    if (moisture_)
+    {
+        const std::vector<double> q = moisture_->liggghtsHeatFluxes(dem, heatFlux_);
+        guards.checkParticles("heat flux less the latent heat", q, particles);
+        dem.setHeatFluxes(q);
+    }
+    else
+    {
+        dem.setHeatFluxes(heatFlux_);
+    }
     row.heat = heatRow(dem, particles);
     if (moisture_)
     {

@@ -103,6 +103,16 @@ solvers
         self.assertEqual(dict(foamfile.entry(path, 'solvers/pFinal')),
                          {'solver': 'PCG', 'tolerance': '1e-7', 'relTol': '0'})
 
+    def test_a_later_entry_overrides_and_dictionaries_merge(self):
+        self.write('system/controlDict.options',
+                   'endTime 0.5;\nfunctions { averages { timeStart 0.3; } }\n')
+        path = self.write('system/controlDict', MERGED)
+        self.assertEqual(foamfile.scalar(path, 'endTime'), 0.5)
+        self.assertEqual(foamfile.scalar(path, 'writeInterval'), 0.1)
+        self.assertEqual(dict(foamfile.entry(path, 'functions/averages')),
+                         {'type': 'fieldAverage', 'timeStart': '0.3'})
+        self.assertEqual(foamfile.entry(path, 'functions/probe/fields'), '(p)')
+
     def test_bad_input_names_the_file_and_the_key(self):
         path = self.write('constant/transportProperties', 'rho 1.2;\nmu (1 2 3);\ng { x 1; }\n')
         for key, expected in (('nu', 'no entry "nu"'),
@@ -182,12 +192,28 @@ AGAINST_FOAM = [
 ]
 
 
+# a dictionary with a per-run include at its end (as the cases' Allrun write)
+MERGED = HEADER + '''
+endTime 2;
+writeInterval 0.1;
+functions
+{
+    averages { type fieldAverage; timeStart 0.2; }
+    probe { fields (p); }
+}
+#includeIfPresent "controlDict.options"
+'''
+
+
+FOAM_ENV = dict(os.environ, WM_PROJECT='OpenFOAM', WM_PROJECT_VERSION='v1912',
+                WM_PROJECT_DIR='/usr/share/openfoam', FOAM_ETC='/usr/share/openfoam/etc',
+                FOAM_API='1912')
+
+
 @unittest.skipUnless(shutil.which('foamDictionary'), 'foamDictionary not installed')
 class AgainstFoamDictionary(unittest.TestCase):
     def test_the_cases_dictionaries(self):
-        env = dict(os.environ, WM_PROJECT='OpenFOAM', WM_PROJECT_VERSION='v1912',
-                   WM_PROJECT_DIR='/usr/share/openfoam', FOAM_ETC='/usr/share/openfoam/etc',
-                   FOAM_API='1912')
+        env = FOAM_ENV
         cases = os.path.join(REPOSITORY, 'openfoam_cases')
         for name, key in AGAINST_FOAM:
             path = os.path.join(cases, name)
@@ -199,6 +225,25 @@ class AgainstFoamDictionary(unittest.TestCase):
                 self.assertEqual(theirs.returncode, 0, theirs.stderr)
                 ours = foamfile.entry(path, key)
                 self.assertEqual(foamfile.parse_value(ours),
+                                 foamfile.parse_value(theirs.stdout.strip()))
+
+    def test_a_per_run_include_overrides_as_in_openfoam(self):
+        case = tempfile.mkdtemp()
+        self.addCleanup(shutil.rmtree, case)
+        os.makedirs(os.path.join(case, 'system'))
+        with open(os.path.join(case, 'system', 'controlDict.options'), 'w') as f:
+            f.write('endTime 0.5;\nfunctions { averages { timeStart 0.3; } }\n')
+        path = os.path.join(case, 'system', 'controlDict')
+        with open(path, 'w') as f:
+            f.write(MERGED)
+        for key in ('endTime', 'writeInterval', 'functions/averages/type',
+                    'functions/averages/timeStart', 'functions/probe/fields'):
+            with self.subTest(key=key):
+                theirs = subprocess.run(['foamDictionary', '-entry', key.replace('/', '.'),
+                                         '-value', path], capture_output=True, text=True,
+                                        cwd=case, env=dict(FOAM_ENV, PWD=case))
+                self.assertEqual(theirs.returncode, 0, theirs.stderr)
+                self.assertEqual(foamfile.parse_value(foamfile.entry(path, key)),
                                  foamfile.parse_value(theirs.stdout.strip()))
 
 

@@ -164,10 +164,39 @@ def read_vtp_array(path, name):
     return VtkXmlFile(path).array(name)
 
 
+class Plot:
+    """What became of a picture: true if drawn; str() is its name, or its
+    name and why it was not drawn, as a summary lists it."""
+
+    def __init__(self, png, why=None):
+        self.png, self.why = png, why
+
+    def __bool__(self):
+        return self.why is None
+
+    def __str__(self):
+        return self.png if self.why is None else '%s not drawn (%s)' % (self.png, self.why)
+
+
+def not_drawn(png, why):
+    """A picture left out (why: one line): said now, and a Plot that says so."""
+    print('plot %s not drawn: %s' % (png, why))
+    return Plot(png, why)
+
+
+def plots_text(plots):
+    """The pictures as a summary line lists them: the drawn ones, then each
+    missing one with why ('none' without any)."""
+    drawn = [str(p) for p in plots if p]
+    missing = [str(p) for p in plots if not p]
+    return '; '.join([' '.join(drawn)] * bool(drawn) + missing) or 'none'
+
+
 def plot(png, script, size=(900, 600)):
     """Run a gnuplot script that draws into png (pngcairo, or png if absent).
     If gnuplot cannot draw it (e.g. no finite point), say so in one line and
-    go on: the data files are written either way.  True if drawn."""
+    go on: the data files are written either way.  A Plot: true if drawn,
+    else carrying gnuplot's last line, for the summary to name."""
     terminal = 'set terminal pngcairo size %d,%d font "Sans,11"\n' % size
     full = terminal + 'set output "%s"\n' % png + script
     result = subprocess.run(['gnuplot'], input=full, text=True,
@@ -179,9 +208,8 @@ def plot(png, script, size=(900, 600)):
         if os.path.isfile(png):
             os.remove(png)               # gnuplot leaves an empty file behind
         why = [line.strip() for line in result.stderr.splitlines() if line.strip()]
-        print('plot %s not drawn: gnuplot: %s' % (png, why[-1] if why else 'failed'))
-        return False
-    return True
+        return not_drawn(png, 'gnuplot: %s' % (why[-1] if why else 'failed'))
+    return Plot(png)
 
 
 class Checks:

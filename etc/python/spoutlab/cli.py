@@ -1,14 +1,23 @@
 """The command lines of the case scripts and protocols: argparse parsers
 with the module's docstring as their help, and the argument types they
-share.  Bad input ends with argparse's usage line and one error line that
-names the option."""
+share.  Bad input ends with one line on stderr, status 2: the command, what
+was wrong (naming the option) and where the options are listed."""
 import argparse
 
 
-def parser(prog, doc, epilog=None):
+class Parser(argparse.ArgumentParser):
+    """argparse, but a bad option is one line, 'PROG: MESSAGE (PROG --help
+    lists the options)', not argparse's usage text and error line."""
+
+    def error(self, message):
+        self.exit(2, '%s: %s (%s --help lists the options)\n'
+                  % (self.prog, ' '.join(message.split()), self.prog))
+
+
+def parser(prog, doc, epilog=None, **kwargs):
     """A parser whose --help shows doc (a module docstring) as written."""
-    return argparse.ArgumentParser(prog=prog, description=doc, epilog=epilog, allow_abbrev=False,
-                                   formatter_class=argparse.RawDescriptionHelpFormatter)
+    return Parser(prog=prog, description=doc, epilog=epilog, allow_abbrev=False,
+                  formatter_class=argparse.RawDescriptionHelpFormatter, **kwargs)
 
 
 def override(text):

@@ -14,10 +14,10 @@ planes.
         writes CASE/constant/cellDecomposition and CASE/system/decomposeParDict
         (N slabs); needs CASE/0/C (postProcess -func writeCellCentres)
 """
-import argparse
 import os
 import sys
 
+from spoutlab import cli
 from spoutlab import foamfile
 
 
@@ -73,7 +73,7 @@ def write(case, n):
 
 
 def main():
-    parser = argparse.ArgumentParser(prog='decomposition', description=__doc__.split('\n\n')[0])
+    parser = cli.Parser(prog='decomposition', description=__doc__.split('\n\n')[0])
     parser.add_argument('case')
     parser.add_argument('ranks', type=int)
     args = parser.parse_args()

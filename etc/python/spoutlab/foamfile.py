@@ -13,6 +13,9 @@ What is understood, which is what the cases use: // and /* */ comments,
 actions), #include and #includeIfPresent (relative to the including file;
 $FOAM_CASE and environment variables expanded), $name looked up from the
 innermost scope outwards, and a '$name;' entry that merges a dictionary.
+An entry given twice takes its later value, and a sub-dictionary given
+twice is merged, key by key at every depth (OpenFOAM's default, so a
+per-run include at the end of a dictionary overrides its entries).
 Other #directives (#includeEtc, #inputMode, #calc) are refused with the
 file's name rather than read wrongly.
 """
@@ -144,6 +147,8 @@ def _parse(tokens, k, dictionary, path):
         key = key.strip('"')
         if k + 1 < len(tokens) and tokens[k + 1] == '{':
             sub = Dictionary(path, dictionary)
+            if isinstance(dictionary.get(key), Dictionary):
+                sub.update(dictionary[key])   # given again: merged, as OpenFOAM does
             k = _parse(tokens, k + 2, sub, path)
             dictionary[key] = sub
             continue

@@ -54,13 +54,13 @@ usage: python3 -m spoutlab.mixing CASE [--split {left-right,lower-upper,both}]
 writes CASE/postProcessing/mixing.csv and mixing.png; with --scan-cells
 mixingCellSize.csv; and postProcessing/mixingParticles/ (see write_labelled).
 """
-import argparse
 import math
 import os
 import re
 import sys
 
 from spoutlab import casefiles as sc
+from spoutlab import cli
 
 SPLITS = ('left-right', 'lower-upper')
 DEFAULT_SPLIT = 'left-right'
@@ -309,7 +309,7 @@ def plot_history(csv, splits, png):
 
 
 def main(argv=None):
-    p = argparse.ArgumentParser(prog='mixing',
+    p = cli.Parser(prog='mixing',
         description='Degree of particle mixing of a spouted-bed case (eqs 17-19 and '
                     'Lacey) from its particle files; writes postProcessing/mixing.csv, '
                     'mixing.png and the labelled particles for ParaView '

@@ -48,7 +48,7 @@ def moisture_history(g, case='.'):
 
 
 def plot_history(rows, png):
-    """moistureHistory.csv and its plot; True if drawn."""
+    """moistureHistory.csv and its picture (a casefiles.Plot)."""
     with open('moistureHistory.csv', 'w') as f:
         f.write('time [s],mean moisture spout [kg/kg],mean moisture downcomer [kg/kg],'
                 'mean moisture [kg/kg],moisture 5 % [kg/kg],moisture 95 % [kg/kg]\n')
@@ -119,7 +119,9 @@ def summarize(g, window, lines, case='.', pictures_drawn=True):
     pairwise, water = hc.water_balance(rows)
     _, energy = hc.energy_balance(rows)
     history = moisture_history(g, case)
-    plots = ['particleMoisture.png'] if history and plot_history(history, 'particleMoisture.png') else []
+    png = 'particleMoisture.png'
+    plots = [plot_history(history, png) if history
+             else sc.not_drawn(png, 'no particle file with moisture')]
     heat = window_mean(rows, 'heat to particles [W]', start)
     latent = window_mean(rows, 'latent heat from particles [W]', start)
     out = {'rate': window_mean(rows, 'water lost by particles [kg/s]', start),
@@ -140,5 +142,5 @@ def summarize(g, window, lines, case='.', pictures_drawn=True):
                  % (pairwise, water, energy))
     if pictures_drawn:
         lines.append('  moisture pictures: ' + ' '.join(pictures(g, shown_times(case), g.X0, case)))
-    lines.append('  data: moistureHistory.csv; plots: ' + (' '.join(plots) or 'none'))
+    lines.append('  data: moistureHistory.csv; plots: ' + sc.plots_text(plots))
     return out

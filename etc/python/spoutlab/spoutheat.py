@@ -137,7 +137,7 @@ def slope(rows, column, lo, hi):
 
 
 def plot_history(rows, png):
-    """True if drawn."""
+    """heatHistory.csv and its picture (a casefiles.Plot)."""
     with open('heatHistory.csv', 'w') as f:
         f.write('time [s],mean particle temperature spout [K],'
                 'mean particle temperature downcomer [K],mean particle temperature [K]\n')
@@ -157,11 +157,14 @@ plot "heatHistory.csv" skip 1 using 1:2 with linespoints lw 2 title "spout", \\
 
 
 def plot_profiles(profile, png):
-    """True if drawn."""
+    """heatProfiles.csv and its picture (a casefiles.Plot); without a
+    particle in the band, no picture, and the Plot says why."""
     with open('heatProfiles.csv', 'w') as f:
         f.write('x/R_d,h [W/m2/K],Re,samples\n')
         for r in profile:
             f.write('%.4f,%.6g,%.6g,%d\n' % r)
+    if not profile:
+        return sc.not_drawn(png, 'no particle in z/R_d %g-%g over the averaging window' % BAND)
     return sc.plot(png, '''
 set multiplot layout 2,1 title "Heat-transfer coefficient and Reynolds number, z/R_d %g-%g (Fig 12)"
 set grid
@@ -205,15 +208,14 @@ def summarize(g, window, lines, case='.', pictures=True):
     last = rows[-1]
     pairwise, balance = hc.energy_balance(rows)
     history = particle_history(g, case)
-    plots = ['particleTemperature.png'] if plot_history(history, 'particleTemperature.png') else []
+    plots = [plot_history(history, 'particleTemperature.png')]
     times = write_times(case)
     end = times[-1][0]
     averaged = [n for t, n in times if t >= end - window - 1e-9 and t > 0]
     centres = foamfile.read_field(os.path.join(case, '0', 'C'))
     samples = read_samples(averaged, case)
     profile, means = band_profiles(g, centres, samples)
-    if plot_profiles(profile, 'heatTransfer.png'):
-        plots.append('heatTransfer.png')
+    plots.append(plot_profiles(profile, 'heatTransfer.png'))
     heights = height_profiles(g, centres, samples)
     with open('heatHeight.csv', 'w') as f:
         f.write('z/R_d,h spout [W/m2/K],h downcomer [W/m2/K]\n')
@@ -254,5 +256,5 @@ def summarize(g, window, lines, case='.', pictures=True):
                         for f in (1 / 3, 2 / 3, 1)}, key=float)
         lines.append('  temperature pictures: ' + ' '.join(snapshots(g, shown, case)))
     lines.append('  data: heatHistory.csv heatProfiles.csv heatHeight.csv; plots: '
-                 + (' '.join(plots) or 'none'))
+                 + sc.plots_text(plots))
     return out

@@ -280,9 +280,9 @@ def region_from_text(text, g, what):
 
 if __name__ == '__main__':
     # stand-alone use: python3 -m spoutlab.spoutregime [CASE]
-    import argparse
+    from spoutlab import cli
     from spoutlab import spoutedbed
-    p = argparse.ArgumentParser(prog='spoutregime', description='Whether the bed of a '
+    p = cli.Parser(prog='spoutregime', description='Whether the bed of a '
                                 'spouted-bed case spouts: the classifier over all its '
                                 'particle files.')
     p.add_argument('case', nargs='?', default='.', help='the case (default: here)')

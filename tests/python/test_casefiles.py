@@ -1,0 +1,75 @@
+"""What the case layer does with a picture it cannot draw (spoutlab.casefiles
+plot, Plot, plots_text): the summary names it and says why, instead of
+leaving it out of the list; the spouted bed's heat-transfer picture
+without a particle in its band is one of them."""
+import contextlib
+import io
+import os
+import shutil
+import sys
+import tempfile
+import unittest
+
+sys.path.insert(0, os.path.join(os.environ.get('SPOUTLAB_DIR', '../..'), 'etc', 'python'))
+from spoutlab import casefiles as sc  # noqa: E402
+from spoutlab import spoutheat  # noqa: E402
+
+
+class InDirectory(unittest.TestCase):
+    def setUp(self):
+        self.here = os.getcwd()
+        self.dir = tempfile.mkdtemp()
+        os.chdir(self.dir)
+
+    def tearDown(self):
+        os.chdir(self.here)
+        shutil.rmtree(self.dir)
+
+    def quietly(self, f, *args):
+        out = io.StringIO()
+        with contextlib.redirect_stdout(out):
+            result = f(*args)
+        return result, out.getvalue()
+
+
+class Pictures(InDirectory):
+    def test_the_summary_lists_each_picture_drawn_or_why_not(self):
+        drawn, missing = sc.Plot('a.png'), sc.Plot('b.png', 'gnuplot: x range is invalid')
+        self.assertTrue(drawn)
+        self.assertFalse(missing)
+        self.assertEqual(sc.plots_text([drawn, missing, sc.Plot('c.png')]),
+                         'a.png c.png; b.png not drawn (gnuplot: x range is invalid)')
+        self.assertEqual(sc.plots_text([missing]), 'b.png not drawn (gnuplot: x range is invalid)')
+        self.assertEqual(sc.plots_text([]), 'none')
+
+    @unittest.skipUnless(shutil.which('gnuplot'), 'gnuplot not installed')
+    def test_gnuplot_failing_gives_its_reason_and_no_file(self):
+        with open('empty.csv', 'w') as f:
+            f.write('x,y\n')
+        result, said = self.quietly(sc.plot, 'empty.png',
+                                    'set datafile separator ","\nplot "empty.csv" skip 1 using 1:2\n')
+        self.assertFalse(result)
+        self.assertTrue(result.why.startswith('gnuplot: '), result.why)
+        self.assertEqual(said, 'plot empty.png not drawn: %s\n' % result.why)
+        self.assertFalse(os.path.exists('empty.png'))
+        with open('line.csv', 'w') as f:
+            f.write('x,y\n0,0\n1,1\n')
+        result, said = self.quietly(sc.plot, 'line.png',
+                                    'set datafile separator ","\nplot "line.csv" skip 1 using 1:2\n')
+        self.assertTrue(result)
+        self.assertEqual(str(result), 'line.png')
+        self.assertTrue(os.path.getsize('line.png') > 0)
+
+    def test_no_particle_in_the_heat_transfer_band(self):
+        result, said = self.quietly(spoutheat.plot_profiles, [], 'heatTransfer.png')
+        self.assertFalse(result)
+        self.assertEqual(str(result), 'heatTransfer.png not drawn (no particle in z/R_d '
+                         '16.927-22.454 over the averaging window)')
+        self.assertEqual(len(said.splitlines()), 1)
+        self.assertFalse(os.path.exists('heatTransfer.png'))
+        with open('heatProfiles.csv') as f:
+            self.assertEqual(f.read(), 'x/R_d,h [W/m2/K],Re,samples\n')
+
+
+if __name__ == '__main__':
+    unittest.main()
