@@ -500,7 +500,8 @@ def drying_section(case):
             rows.append(('time to MR 0.5, %d C' % T, '%+.1f %%' % (100 * t['thinlayer_t50_rel']),
                          'Thompson, Peart and Foster 1968 (20 %)', settings, ''))
             keys.append(('dry.thinlayer_t50_rel_%dC' % T, '%.3g' % t['thinlayer_t50_rel'], '', '0',
-                         'SpoutLab / Thompson et al. (1968) - 1; calibration: sphere alone %+.3f'
+                         'SpoutLab / Thompson et al. (1968) - 1 (D_0, E_a calibrated on it); '
+                         'Crank\'s sphere with the same D_eff %+.3f'
                          % t.get('thinlayer_sphere_rel', float('nan'))))
     if b:
         settings = ('%d particles, u_s = %g m/s, inlet %.0f C (W %g), X_0 %.4g, %g s; averages '
