@@ -26,28 +26,13 @@ struct KernelDiffusion::Surface
 namespace
 {
 
-// Tridiagonal solve (Thomas) of a symmetric matrix with diagonal `diag` and
-// off-diagonal -g[i] between rows i-1 and i; rhs overwritten by the solution.
-void solveTridiagonal(const std::vector<double>& diag, const std::vector<double>& g, std::vector<double>& rhs,
-                      std::vector<double>& work)
-{
-    const std::size_t n = diag.size();
-    work.resize(n);
-    double pivot = diag[0];
-    rhs[0] /= pivot;
-    for (std::size_t i = 1; i < n; ++i)
-    {
-        work[i] = -g[i] / pivot;
-        pivot = diag[i] + g[i] * work[i];
-        rhs[i] = (rhs[i] + g[i] * rhs[i - 1]) / pivot;
-    }
-    for (std::size_t i = n - 1; i-- > 0;) rhs[i] -= work[i + 1] * rhs[i + 1];
-}
-
 long requireShells(const Parameters& props)
 {
     const long n = props.getInteger("nShells", 15);
-    if (n < 2 || n > 200) throw props.badValue("nShells", "a number of shells from 2 to 200");
+    if (n < 2 || n > KernelDiffusion::kMaxShells)
+    {
+        throw props.badValue("nShells", "a number of shells from 2 to 200");
+    }
     return n;
 }
 
@@ -113,38 +98,47 @@ double KernelDiffusion::surfaceMoisture(const Surface& s, double p, double q, do
     return increasingRoot(film, slope, 0.0, hi, guess);
 }
 
-// One backward-Euler step of D_eff dt/R^2 = dTau; returns X_s.
+// One backward-Euler step of D_eff dt/R^2 = dTau; returns X_s. The shells'
+// equations (w_i/dTau + g_i + g_i+1) Y_i - g_i Y_i-1 - g_i+1 Y_i+1 = w_i/dTau X_i,
+// the outer one less the surface flux j, are eliminated once from the centre
+// out (Thomas): the outer shell is then Y_N-1 = P + Q j, Q = -1/(its pivot).
+// With X_s and j known, the back substitution from Y_N-1 inwards gives the
+// shells (the same as solving for the two right-hand sides P and Q apart).
 double KernelDiffusion::subStep(const Surface& s, double* shells, double dTau, double surfaceGuess) const
 {
-    const std::size_t n = weights_.size();
-    // scratch reused from call to call (a particle's step allocates nothing)
-    thread_local std::vector<double> diag, p, q, work;
-    diag.resize(n);
-    p.resize(n);
-    q.assign(n, 0.0);
-    for (std::size_t i = 0; i < n; ++i)
+    const int n = static_cast<int>(weights_.size());
+    const double* w = weights_.data();
+    const double* g = conductance_.data(); // g[0] = 0: no flux at the centre
+    const double perTau = 1.0 / dTau;
+    double upper[kMaxShells];   // the eliminated upper diagonal -g_i+1/pivot_i
+    double reduced[kMaxShells]; // the eliminated right-hand side
+    double pivot = w[0] * perTau + g[1];
+    double previous = w[0] * perTau * shells[0] / pivot;
+    reduced[0] = previous;
+    for (int i = 1; i < n; ++i)
     {
-        diag[i] = weights_[i] / dTau + conductance_[i] + (i + 1 < n ? conductance_[i + 1] : 0.0);
-        p[i] = weights_[i] / dTau * shells[i];
+        upper[i - 1] = -g[i] / pivot;
+        pivot = w[i] * perTau + g[i] + (i + 1 < n ? g[i + 1] : 0.0) + g[i] * upper[i - 1];
+        previous = (w[i] * perTau * shells[i] + g[i] * previous) / pivot;
+        reduced[i] = previous;
     }
-    q[n - 1] = -1.0;
-    solveTridiagonal(diag, conductance_, p, work); // shells without surface flux
-    solveTridiagonal(diag, conductance_, q, work); // response to a unit surface flux
-    const double surface = surfaceMoisture(s, p[n - 1], q[n - 1], surfaceGuess);
-    const double gs = conductance_.back();
-    const double j = gs / (1.0 - gs * q[n - 1]) * (p[n - 1] - surface);
-    for (std::size_t i = 0; i < n; ++i) shells[i] = p[i] + q[i] * j;
+    const double q = -1.0 / pivot, p = reduced[n - 1];
+    const double surface = surfaceMoisture(s, p, q, surfaceGuess);
+    const double gs = g[n];
+    const double j = gs / (1.0 - gs * q) * (p - surface);
+    shells[n - 1] = p + q * j;
+    for (int i = n - 1; i-- > 0;) shells[i] = reduced[i] - upper[i] * shells[i + 1];
     return surface;
 }
 
 namespace
 {
 
-KernelDiffusion::Surface surfaceOf(const KernelDiffusion& model, const Kernel& kernel, const MoistAir& air,
-                                   double massTransferCoefficient)
+// d: D_eff at the kernel's temperature
+KernelDiffusion::Surface surfaceOf(const Kernel& kernel, const MoistAir& air, double massTransferCoefficient,
+                                   double d)
 {
     const double radius = 0.5 * kernel.diameter;
-    const double d = model.diffusivity(kernel.temperature);
     return {massTransferCoefficient * surfaceArea(kernel) * radius * radius / (kernel.dryMass * d),
             saturationVapourDensity(kernel.temperature), vapourDensity(air), kernel.temperature};
 }
@@ -155,12 +149,13 @@ double KernelDiffusion::rate(const Kernel& kernel, double, const double* state, 
                              double massTransferCoefficient) const
 {
     const int n = shells();
-    const Surface s = surfaceOf(*this, kernel, air, massTransferCoefficient);
+    const double d = diffusivity(kernel.temperature);
+    const Surface s = surfaceOf(kernel, air, massTransferCoefficient, d);
     // the outer shell as it is (Q = 0): j = g_s (X_N-1 - X_s)
     const double surface = surfaceMoisture(s, state[n - 1], 0.0, state[n]);
     const double j = conductance_.back() * (state[n - 1] - surface);
     const double radius = 0.5 * kernel.diameter;
-    return j * kernel.dryMass * diffusivity(kernel.temperature) / (radius * radius);
+    return j * kernel.dryMass * d / (radius * radius);
 }
 
 double KernelDiffusion::advance(const Kernel& kernel, double& moisture, double* state, const MoistAir& air,
@@ -170,8 +165,9 @@ double KernelDiffusion::advance(const Kernel& kernel, double& moisture, double* 
     const int n = shells();
     const double old = moisture;
     const double radius = 0.5 * kernel.diameter;
-    const double tau = diffusivity(kernel.temperature) * dt / (radius * radius);
-    const Surface s = surfaceOf(*this, kernel, air, massTransferCoefficient);
+    const double d = diffusivity(kernel.temperature);
+    const double tau = d * dt / (radius * radius);
+    const Surface s = surfaceOf(kernel, air, massTransferCoefficient, d);
     const long steps = static_cast<long>(std::ceil(tau / kMaxStep));
     for (long k = 0; k < steps; ++k) state[n] = subStep(s, state, tau / steps, state[n]);
     if (steps == 0) return 0.0;

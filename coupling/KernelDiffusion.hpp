@@ -68,6 +68,8 @@ public:
     double weight(int i) const { return weights_[i]; }
     // Largest D_eff dt/R^2 of one backward-Euler sub-step.
     static constexpr double kMaxStep = 5e-5;
+    // Most shells (nShells).
+    static constexpr int kMaxShells = 200;
 
     struct Surface; // what a step holds fixed at the surface (KernelDiffusion.cpp)
 
