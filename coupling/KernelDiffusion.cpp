@@ -79,12 +79,42 @@ void KernelDiffusion::initialise(double moisture, double* state) const
 // X_s with the outer shell at P + Q j and j = g_s (Y_N-1 - X_s): eliminating
 // Y_N-1 gives j = G (P - X_s), G = g_s/(1 - g_s Q) (Q <= 0), and the film
 // condition kappa (a_w(X_s) rho_sat - rho_inf) = G (P - X_s), which rises with
-// X_s: one root, in [0, P + kappa rho_inf/G].
-double KernelDiffusion::surfaceMoisture(const Surface& s, double p, double q, double guess) const
+// X_s: one root, in [0, P + kappa rho_inf/G]. Solved for the drop
+// u = P - X_s across the outer half-shell (j = G u without cancellation):
+// Newton from the guess (the last step's X_s, whose a_w the caller has
+// already evaluated: atGuess), which in a coupling step is within a step's
+// change of the root and converges in two evaluations; should an iterate
+// leave the bracket or not settle, the bracketed iteration in X_s.
+double KernelDiffusion::surfaceMoisture(const Surface& s, double p, double q, double guess,
+                                        SorptionIsotherm::Activity atGuess, double& drop) const
 {
+    drop = 0.0;
+    if (s.kappa == 0.0) return p; // no film: no flux, X_s = the outer shell's
     const double gs = conductance_.back();
     const double g = gs / (1.0 - gs * q);
     const SorptionIsotherm& iso = isotherm();
+    const double lowest = -s.kappa * s.farVapour / g; // u at X_s = P + kappa rho_inf/G
+    double u = p - guess, last = 0.0;
+    SorptionIsotherm::Activity a = atGuess;
+    for (int k = 0; k < 8 && u > lowest && u < p; ++k)
+    {
+        if (k > 0) a = iso.activity(p - u, s.temperature);
+        const double f = g * u - s.kappa * (a.value * s.saturatedVapour - s.farVapour);
+        const double du = f / (g + s.kappa * s.saturatedVapour * a.derivative);
+        u -= du;
+        // Converged when this step is at round-off, or when it is so far
+        // below the last that the convergence is quadratic (the slope is
+        // exact) and the error it leaves, about |du| (du/last)^2, is below
+        // round-off: from the last step's X_s, two evaluations.
+        const double scale = 1e-16 * (std::fabs(u) + std::fabs(p - u));
+        const double ratio = k > 0 ? du / last : 1.0;
+        last = du;
+        const bool quadratic = std::fabs(ratio) < 1e-3 && std::fabs(du) * ratio * ratio < scale;
+        if (!quadratic && std::fabs(du) > 1e-14 * std::fabs(u) + 1e-15 * std::fabs(p - u)) continue;
+        if (!(u > lowest && u < p)) break;
+        drop = u;
+        return p - u;
+    }
     auto film = [&](double x) {
         return s.kappa * (iso.waterActivity(x, s.temperature) * s.saturatedVapour - s.farVapour)
                - g * (p - x);
@@ -92,10 +122,11 @@ double KernelDiffusion::surfaceMoisture(const Surface& s, double p, double q, do
     auto slope = [&](double x) {
         return s.kappa * s.saturatedVapour * iso.waterActivityDerivative(x, s.temperature) + g;
     };
-    if (s.kappa == 0.0) return p; // no film: no flux, X_s = the outer shell's
-    const double hi = p + s.kappa * s.farVapour / g;
-    if (!(hi > 0.0) || film(0.0) >= 0.0) return 0.0; // a bone-dry surface: the water limits the flux
-    return increasingRoot(film, slope, 0.0, hi, guess);
+    const double hi = p - lowest;
+    double x = 0.0; // a bone-dry surface: the water limits the flux
+    if (hi > 0.0 && film(0.0) < 0.0) x = increasingRoot(film, slope, 0.0, hi, guess);
+    drop = p - x;
+    return x;
 }
 
 // One backward-Euler step of D_eff dt/R^2 = dTau; returns X_s. The shells'
@@ -104,7 +135,8 @@ double KernelDiffusion::surfaceMoisture(const Surface& s, double p, double q, do
 // out (Thomas): the outer shell is then Y_N-1 = P + Q j, Q = -1/(its pivot).
 // With X_s and j known, the back substitution from Y_N-1 inwards gives the
 // shells (the same as solving for the two right-hand sides P and Q apart).
-double KernelDiffusion::subStep(const Surface& s, double* shells, double dTau, double surfaceGuess) const
+double KernelDiffusion::subStep(const Surface& s, double* shells, double dTau, double surfaceGuess,
+                                SorptionIsotherm::Activity atGuess) const
 {
     const int n = static_cast<int>(weights_.size());
     const double* w = weights_.data();
@@ -123,9 +155,10 @@ double KernelDiffusion::subStep(const Surface& s, double* shells, double dTau, d
         reduced[i] = previous;
     }
     const double q = -1.0 / pivot, p = reduced[n - 1];
-    const double surface = surfaceMoisture(s, p, q, surfaceGuess);
+    double drop;
+    const double surface = surfaceMoisture(s, p, q, surfaceGuess, atGuess, drop);
     const double gs = g[n];
-    const double j = gs / (1.0 - gs * q) * (p - surface);
+    const double j = gs / (1.0 - gs * q) * drop;
     shells[n - 1] = p + q * j;
     for (int i = n - 1; i-- > 0;) shells[i] = reduced[i] - upper[i] * shells[i + 1];
     return surface;
@@ -152,14 +185,28 @@ double KernelDiffusion::rate(const Kernel& kernel, double, const double* state, 
     const double d = diffusivity(kernel.temperature);
     const Surface s = surfaceOf(kernel, air, massTransferCoefficient, d);
     // the outer shell as it is (Q = 0): j = g_s (X_N-1 - X_s)
-    const double surface = surfaceMoisture(s, state[n - 1], 0.0, state[n]);
-    const double j = conductance_.back() * (state[n - 1] - surface);
+    double drop;
+    surfaceMoisture(s, state[n - 1], 0.0, state[n], isotherm().activity(state[n], kernel.temperature), drop);
+    const double j = conductance_.back() * drop;
     const double radius = 0.5 * kernel.diameter;
     return j * kernel.dryMass * d / (radius * radius);
 }
 
 double KernelDiffusion::advance(const Kernel& kernel, double& moisture, double* state, const MoistAir& air,
                                 double massTransferCoefficient, double dt) const
+{
+    return step(kernel, moisture, state, air, massTransferCoefficient, dt, nullptr);
+}
+
+double KernelDiffusion::advanceWithLatentHeat(const Kernel& kernel, double& moisture, double* state,
+                                              const MoistAir& air, double massTransferCoefficient, double dt,
+                                              double& latentHeat) const
+{
+    return step(kernel, moisture, state, air, massTransferCoefficient, dt, &latentHeat);
+}
+
+double KernelDiffusion::step(const Kernel& kernel, double& moisture, double* state, const MoistAir& air,
+                             double massTransferCoefficient, double dt, double* latentHeat) const
 {
     checkStep(moisture, massTransferCoefficient, dt);
     const int n = shells();
@@ -168,8 +215,16 @@ double KernelDiffusion::advance(const Kernel& kernel, double& moisture, double* 
     const double d = diffusivity(kernel.temperature);
     const double tau = d * dt / (radius * radius);
     const Surface s = surfaceOf(kernel, air, massTransferCoefficient, d);
+    // the isotherm at the surface as the step finds it: the latent heat and
+    // the surface root's first iterate
+    SorptionIsotherm::Activity atSurface = isotherm().activity(state[n], kernel.temperature);
+    if (latentHeat) *latentHeat = SorptionIsotherm::latentHeat(kernel.temperature, atSurface);
     const long steps = static_cast<long>(std::ceil(tau / kMaxStep));
-    for (long k = 0; k < steps; ++k) state[n] = subStep(s, state, tau / steps, state[n]);
+    for (long k = 0; k < steps; ++k)
+    {
+        if (k > 0) atSurface = isotherm().activity(state[n], kernel.temperature);
+        state[n] = subStep(s, state, tau / steps, state[n], atSurface);
+    }
     if (steps == 0) return 0.0;
     double mean = 0.0;
     for (int i = 0; i < n; ++i) mean += weights_[i] * state[i];

@@ -58,6 +58,9 @@ public:
                 double massTransferCoefficient) const override;
     double advance(const Kernel& kernel, double& moisture, double* state, const MoistAir& air,
                    double massTransferCoefficient, double dt) const override;
+    double advanceWithLatentHeat(const Kernel& kernel, double& moisture, double* state, const MoistAir& air,
+                                 double massTransferCoefficient, double dt,
+                                 double& latentHeat) const override;
     double latentHeat(const Kernel& kernel, double moisture, const double* state) const override;
     std::string name() const override { return "kernelDiffusion"; }
 
@@ -74,10 +77,16 @@ public:
     struct Surface; // what a step holds fixed at the surface (KernelDiffusion.cpp)
 
 private:
-    // X_s and the surface flux j (in units of m_d D_eff/R^2) with the outer
-    // shell's moisture given as P + Q j.
-    double surfaceMoisture(const Surface& s, double p, double q, double guess) const;
-    double subStep(const Surface& s, double* shells, double dTau, double surfaceGuess) const;
+    // X_s with the outer shell's moisture given as P + Q j, and the drop
+    // P - X_s (the surface flux j is G times it, KernelDiffusion.cpp);
+    // atGuess: the isotherm at X_s = guess.
+    double surfaceMoisture(const Surface& s, double p, double q, double guess,
+                           SorptionIsotherm::Activity atGuess, double& drop) const;
+    double subStep(const Surface& s, double* shells, double dTau, double surfaceGuess,
+                   SorptionIsotherm::Activity atGuess) const;
+    // advance(), and with latentHeat non-null the latent heat before it
+    double step(const Kernel& kernel, double& moisture, double* state, const MoistAir& air,
+                double massTransferCoefficient, double dt, double* latentHeat) const;
 
     double d0_;
     double activationEnergy_;
