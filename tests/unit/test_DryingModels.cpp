@@ -448,3 +448,57 @@ TEST(KernelDiffusion, TheFilmLimitsTheSurface)
         model.latentHeat(k, x, state.data()),
         SorptionIsotherm::New("modifiedHenderson", Parameters("x"))->latentHeat(surface, k.temperature));
 }
+
+// What a coupling step of the spouted bed asks of each kernel (3e-4 s steps,
+// a hot kernel in a strong film): the water a backward-Euler step loses is
+// the film's flux at the step's new surface, dt k_m A (a_w(X_s) rho_sat -
+// rho_inf), by the hand formulas, to the round-off of m_d (X_old - X_new) (a
+// few ulps of X against a step's change of 1e-6 X); and the latent heat and the
+// step in one call are the two calls' to the last bit, for every model.
+TEST(KernelDiffusion, EachStepLosesWhatTheFilmCarriesAtItsSurface)
+{
+    const KernelDiffusion model(diffusionProps());
+    const MoistAir hot{420.0, 0.012, 101325.0};
+    const Kernel k = kernelAt(360.0);
+    std::vector<double> state(model.stateSize());
+    model.initialise(0.33, state.data());
+    double x = 0.33, worst = 0.0;
+    for (int i = 0; i < 2000; ++i)
+    {
+        const double roundOff = 16.0 * 2.2e-16 * x * k.dryMass;
+        const double water = model.advance(k, x, state.data(), hot, 0.08, 3e-4);
+        const double surface = state[model.shells()];
+        const double aw =
+            1.0 - std::exp(-8.6541e-5 * (360.0 - 273.15 + 49.810) * std::pow(100.0 * surface, 1.8634));
+        const double film = 3e-4 * 0.08 * pi * 64e-6 * (aw * saturated(k.temperature) - farVapour(hot));
+        worst = std::max(worst, std::fabs(water - film) / (roundOff + 1e-13 * film));
+    }
+    EXPECT_LT(worst, 1.0);
+    EXPECT_LT(x, 0.33);
+}
+
+TEST(DryingModels, LatentHeatAndAdvanceInOneCallAreTheTwoCalls)
+{
+    const MoistAir hot{420.0, 0.012, 101325.0};
+    for (const char* name : {"freeWater", "reactionEngineering", "kernelDiffusion"})
+    {
+        const std::string model = name;
+        auto m = make(model, model == "kernelDiffusion" ? diffusionProps() : reaProps());
+        std::vector<double> one(m->stateSize() + 1), two(one);
+        m->initialise(0.33, one.data());
+        m->initialise(0.33, two.data());
+        double x1 = 0.33, x2 = 0.33;
+        for (double dt : {3e-4, 3e-4, 0.01, 1.0, 600.0, 3e-4})
+        {
+            const Kernel k = kernelAt(dt < 1e-3 ? 330.0 : 340.0);
+            const double heat1 = m->latentHeat(k, x1, one.data());
+            const double water1 = m->advance(k, x1, one.data(), hot, 0.08, dt);
+            double heat2 = 0.0;
+            const double water2 = m->advanceWithLatentHeat(k, x2, two.data(), hot, 0.08, dt, heat2);
+            EXPECT_EQ(heat1, heat2) << name << " " << dt;
+            EXPECT_EQ(water1, water2) << name << " " << dt;
+            EXPECT_EQ(x1, x2) << name << " " << dt;
+            EXPECT_EQ(one, two) << name << " " << dt;
+        }
+    }
+}
