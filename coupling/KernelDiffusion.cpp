@@ -26,6 +26,62 @@ struct KernelDiffusion::Surface
 namespace
 {
 
+// Eigenvalues and orthonormal eigenvectors of the symmetric n x n matrix a
+// (row-major, destroyed) by cyclic Jacobi rotations; vectors[k n + i] is
+// component i of vector k. An off-diagonal entry is dropped once it is below
+// round-off of the geometric mean of its two diagonal entries, which keeps
+// the small eigenvalues of a graded matrix to their relative precision.
+void symmetricEigen(std::vector<double> a, int n, std::vector<double>& values, std::vector<double>& vectors)
+{
+    vectors.assign(static_cast<std::size_t>(n) * n, 0.0);
+    for (int i = 0; i < n; ++i) vectors[i * n + i] = 1.0;
+    auto at = [&](int i, int j) -> double& { return a[static_cast<std::size_t>(i) * n + j]; };
+    for (int sweep = 0; sweep < 100; ++sweep)
+    {
+        bool rotated = false;
+        for (int p = 0; p < n; ++p)
+        {
+            for (int q = p + 1; q < n; ++q)
+            {
+                const double apq = at(p, q);
+                if (std::fabs(apq) <= 1e-17 * std::sqrt(std::fabs(at(p, p) * at(q, q))))
+                {
+                    at(p, q) = at(q, p) = 0.0;
+                    continue;
+                }
+                rotated = true;
+                const double theta = (at(q, q) - at(p, p)) / (2.0 * apq);
+                const double t =
+                    (theta >= 0.0 ? 1.0 : -1.0) / (std::fabs(theta) + std::sqrt(theta * theta + 1.0));
+                const double c = 1.0 / std::sqrt(t * t + 1.0), sn = t * c;
+                for (int k = 0; k < n; ++k) // columns p and q
+                {
+                    const double kp = at(k, p), kq = at(k, q);
+                    at(k, p) = c * kp - sn * kq;
+                    at(k, q) = sn * kp + c * kq;
+                }
+                for (int k = 0; k < n; ++k) // rows p and q
+                {
+                    const double pk = at(p, k), qk = at(q, k);
+                    at(p, k) = c * pk - sn * qk;
+                    at(q, k) = sn * pk + c * qk;
+                }
+                for (int k = 0; k < n; ++k)
+                {
+                    double& vp = vectors[static_cast<std::size_t>(p) * n + k];
+                    double& vq = vectors[static_cast<std::size_t>(q) * n + k];
+                    const double op = vp, oq = vq;
+                    vp = c * op - sn * oq;
+                    vq = sn * op + c * oq;
+                }
+            }
+        }
+        if (!rotated) break;
+    }
+    values.resize(n);
+    for (int i = 0; i < n; ++i) values[i] = at(i, i);
+}
+
 long requireShells(const Parameters& props)
 {
     const long n = props.getInteger("nShells", 15);
@@ -63,6 +119,67 @@ KernelDiffusion::KernelDiffusion(const Parameters& props)
     conductance_.assign(n + 1, 0.0);
     for (long f = 1; f < n; ++f) conductance_[f] = 3.0 * face[f] * face[f] / (centroid[f] - centroid[f - 1]);
     conductance_[n] = 3.0 / (1.0 - centroid[n - 1]);
+    modes(static_cast<int>(n));
+}
+
+// The shells' equations without the surface, W dY/dtau = -K Y (W = diag w_i,
+// K the conductances' symmetric Laplacian, K 1 = 0), decouple in the modes
+// K v_k = lambda_k W v_k, v_k' W v_l = delta_kl: from the eigenvectors u_k of
+// S = W^-1/2 K W^-1/2, v_k = W^-1/2 u_k. Mode 0 is the uniform v_0 = 1 at
+// lambda_0 = 0, set exactly (its amplitude is the mean moisture), the others
+// made orthogonal to it.
+void KernelDiffusion::modes(int n)
+{
+    const std::vector<double>& w = weights_;
+    const std::vector<double>& g = conductance_;
+    std::vector<double> sym(static_cast<std::size_t>(n) * n, 0.0);
+    for (int i = 0; i < n; ++i)
+    {
+        sym[i * n + i] = (g[i] + (i + 1 < n ? g[i + 1] : 0.0)) / w[i];
+        if (i > 0) sym[i * n + i - 1] = sym[(i - 1) * n + i] = -g[i] / std::sqrt(w[i] * w[i - 1]);
+    }
+    std::vector<double> values, vectors;
+    symmetricEigen(sym, n, values, vectors);
+    std::vector<int> order(n);
+    for (int k = 0; k < n; ++k) order[k] = k;
+    std::sort(order.begin(), order.end(), [&](int a, int b) { return values[a] < values[b]; });
+    double norm = 0.0;
+    for (int i = 0; i < n; ++i) norm += w[i];
+    lambda_.assign(n, 0.0);
+    modes_.assign(static_cast<std::size_t>(n) * n, 0.0);
+    for (int i = 0; i < n; ++i) modes_[i] = 1.0; // v_0 (sum w_i = 1 to round-off)
+    std::vector<double> v(n);
+    for (int k = 1; k < n; ++k)
+    {
+        const double* u = &vectors[static_cast<std::size_t>(order[k]) * n];
+        double along = 0.0, length = 0.0;
+        for (int i = 0; i < n; ++i) along += u[i] * std::sqrt(w[i] / norm);
+        for (int i = 0; i < n; ++i)
+        {
+            v[i] = u[i] - along * std::sqrt(w[i] / norm);
+            length += v[i] * v[i];
+        }
+        for (int i = 0; i < n; ++i) modes_[k * n + i] = v[i] / std::sqrt(length * w[i]);
+        lambda_[k] = values[order[k]];
+    }
+    outer_.resize(n);
+    outerSquared_.resize(n);
+    for (int k = 0; k < n; ++k)
+    {
+        outer_[k] = modes_[k * n + n - 1];
+        outerSquared_[k] = outer_[k] * outer_[k];
+    }
+}
+
+void KernelDiffusion::shellMoistures(const double* state, double* shells) const
+{
+    const int n = this->shells();
+    for (int i = 0; i < n; ++i)
+    {
+        double x = 0.0;
+        for (int k = 0; k < n; ++k) x += state[k] * modes_[k * n + i];
+        shells[i] = x;
+    }
 }
 
 double KernelDiffusion::diffusivity(double temperature) const
@@ -73,7 +190,10 @@ double KernelDiffusion::diffusivity(double temperature) const
 
 void KernelDiffusion::initialise(double moisture, double* state) const
 {
-    std::fill(state, state + stateSize(), moisture);
+    // uniform: mode 0 alone
+    std::fill(state, state + stateSize(), 0.0);
+    state[0] = moisture;
+    state[shells()] = moisture;
 }
 
 // X_s with the outer shell at P + Q j and j = g_s (Y_N-1 - X_s): eliminating
@@ -129,38 +249,30 @@ double KernelDiffusion::surfaceMoisture(const Surface& s, double p, double q, do
     return x;
 }
 
-// One backward-Euler step of D_eff dt/R^2 = dTau; returns X_s. The shells'
-// equations (w_i/dTau + g_i + g_i+1) Y_i - g_i Y_i-1 - g_i+1 Y_i+1 = w_i/dTau X_i,
-// the outer one less the surface flux j, are eliminated once from the centre
-// out (Thomas): the outer shell is then Y_N-1 = P + Q j, Q = -1/(its pivot).
-// With X_s and j known, the back substitution from Y_N-1 inwards gives the
-// shells (the same as solving for the two right-hand sides P and Q apart).
-double KernelDiffusion::subStep(const Surface& s, double* shells, double dTau, double surfaceGuess,
-                                SorptionIsotherm::Activity atGuess) const
+// One backward-Euler step of D_eff dt/R^2 = dTau of the mode amplitudes a_k
+// (decay_k = 1/(1 + dTau lambda_k)); returns X_s. With the surface flux j
+// leaving the outer shell, (W/dTau + K) Y = W X/dTau - j e_N-1 gives per mode
+//   a_k' = (a_k - dTau j v_k,N-1) decay_k
+// and the outer shell Y_N-1 = sum a_k' v_k,N-1 = P + Q j,
+//   P = sum a_k v_k,N-1 decay_k,   Q = -dTau sum v_k,N-1^2 decay_k.
+// The mean moisture a_0 loses dTau j exactly (v_0 = 1, lambda_0 = 0).
+double KernelDiffusion::subStep(const Surface& s, double* amplitude, double dTau, const double* decay,
+                                double surfaceGuess, SorptionIsotherm::Activity atGuess) const
 {
-    const int n = static_cast<int>(weights_.size());
-    const double* w = weights_.data();
-    const double* g = conductance_.data(); // g[0] = 0: no flux at the centre
-    const double perTau = 1.0 / dTau;
-    double upper[kMaxShells];   // the eliminated upper diagonal -g_i+1/pivot_i
-    double reduced[kMaxShells]; // the eliminated right-hand side
-    double pivot = w[0] * perTau + g[1];
-    double previous = w[0] * perTau * shells[0] / pivot;
-    reduced[0] = previous;
-    for (int i = 1; i < n; ++i)
+    const int n = shells();
+    double p = 0.0, q = 0.0;
+    for (int k = 0; k < n; ++k)
     {
-        upper[i - 1] = -g[i] / pivot;
-        pivot = w[i] * perTau + g[i] + (i + 1 < n ? g[i + 1] : 0.0) + g[i] * upper[i - 1];
-        previous = (w[i] * perTau * shells[i] + g[i] * previous) / pivot;
-        reduced[i] = previous;
+        p += amplitude[k] * outer_[k] * decay[k];
+        q += outerSquared_[k] * decay[k];
     }
-    const double q = -1.0 / pivot, p = reduced[n - 1];
+    q *= -dTau;
     double drop;
     const double surface = surfaceMoisture(s, p, q, surfaceGuess, atGuess, drop);
-    const double gs = g[n];
-    const double j = gs / (1.0 - gs * q) * drop;
-    shells[n - 1] = p + q * j;
-    for (int i = n - 1; i-- > 0;) shells[i] = reduced[i] - upper[i] * shells[i + 1];
+    const double gs = conductance_.back();
+    const double flux = dTau * (gs / (1.0 - gs * q) * drop);
+    amplitude[0] -= flux;
+    for (int k = 1; k < n; ++k) amplitude[k] = (amplitude[k] - flux * outer_[k]) * decay[k];
     return surface;
 }
 
@@ -185,8 +297,9 @@ double KernelDiffusion::rate(const Kernel& kernel, double, const double* state, 
     const double d = diffusivity(kernel.temperature);
     const Surface s = surfaceOf(kernel, air, massTransferCoefficient, d);
     // the outer shell as it is (Q = 0): j = g_s (X_N-1 - X_s)
-    double drop;
-    surfaceMoisture(s, state[n - 1], 0.0, state[n], isotherm().activity(state[n], kernel.temperature), drop);
+    double outer = 0.0, drop;
+    for (int k = 0; k < n; ++k) outer += state[k] * outer_[k];
+    surfaceMoisture(s, outer, 0.0, state[n], isotherm().activity(state[n], kernel.temperature), drop);
     const double j = conductance_.back() * drop;
     const double radius = 0.5 * kernel.diameter;
     return j * kernel.dryMass * d / (radius * radius);
@@ -220,15 +333,16 @@ double KernelDiffusion::step(const Kernel& kernel, double& moisture, double* sta
     SorptionIsotherm::Activity atSurface = isotherm().activity(state[n], kernel.temperature);
     if (latentHeat) *latentHeat = SorptionIsotherm::latentHeat(kernel.temperature, atSurface);
     const long steps = static_cast<long>(std::ceil(tau / kMaxStep));
+    if (steps == 0) return 0.0;
+    const double dTau = tau / steps;
+    double decay[kMaxShells];
+    for (int k = 0; k < n; ++k) decay[k] = 1.0 / (1.0 + dTau * lambda_[k]);
     for (long k = 0; k < steps; ++k)
     {
         if (k > 0) atSurface = isotherm().activity(state[n], kernel.temperature);
-        state[n] = subStep(s, state, tau / steps, state[n], atSurface);
+        state[n] = subStep(s, state, dTau, decay, state[n], atSurface);
     }
-    if (steps == 0) return 0.0;
-    double mean = 0.0;
-    for (int i = 0; i < n; ++i) mean += weights_[i] * state[i];
-    moisture = mean;
+    moisture = state[0];
     return kernel.dryMass * (old - moisture);
 }
 
