@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <string>
 
 namespace spoutlab
 {
@@ -323,6 +325,15 @@ double KernelDiffusion::step(const Kernel& kernel, double& moisture, double* sta
 {
     checkStep(moisture, massTransferCoefficient, dt);
     const int n = shells();
+    if (state[0] != moisture)
+    {
+        // the mean moisture is the uniform mode's amplitude, kept equal to X
+        throw std::domain_error("dryingModel kernelDiffusion: expected a particle state whose first value "
+                                "is its moisture X = "
+                                + std::to_string(moisture) + ", got " + std::to_string(state[0])
+                                + " (a state of another layout, such as the shell moistures of a "
+                                  "restart written before the state held the shells' modes)");
+    }
     const double old = moisture;
     const double radius = 0.5 * kernel.diameter;
     const double d = diffusivity(kernel.temperature);

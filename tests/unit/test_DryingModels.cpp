@@ -141,6 +141,23 @@ TEST(DryingModels, AStepOutsideThePreconditionsIsOneLine)
     x = 0.2;
     EXPECT_THROW(model->advance(kernelAt(300.0), x, nullptr, air, -km, 1.0), std::domain_error);
     EXPECT_THROW(model->advance(kernelAt(300.0), x, nullptr, air, km, NAN), std::domain_error);
+    // a kernel-diffusion state that does not hold the particle's X (another
+    // layout: the shells of a state written before it held their modes)
+    const KernelDiffusion diffusion(diffusionProps());
+    std::vector<double> shells(diffusion.stateSize(), 0.33);
+    shells[0] = 0.331;
+    try
+    {
+        diffusion.advance(kernelAt(300.0), x = 0.33, shells.data(), air, km, 1.0);
+        ADD_FAILURE() << "no domain_error";
+    }
+    catch (const std::domain_error& e)
+    {
+        EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos);
+        EXPECT_NE(std::string(e.what()).find("dryingModel kernelDiffusion: expected a particle state"),
+                  std::string::npos)
+            << e.what();
+    }
 }
 
 // --- free water --------------------------------------------------------------------
