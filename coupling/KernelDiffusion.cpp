@@ -103,6 +103,10 @@ KernelDiffusion::KernelDiffusion(const Parameters& props)
     if (!(d0_ > 0.0)) throw props.badValue("D0", "a diffusivity > 0 in m^2/s");
     if (!(activationEnergy_ >= 0.0)) throw props.badValue("activationEnergy", "an energy >= 0 in J/mol");
     const long n = requireShells(props);
+    const long blocks = props.getInteger("kernelSteps", 1);
+    if (blocks < 1 || blocks > 1000)
+        throw props.badValue("kernelSteps", "a number of coupling steps from 1 to 1000");
+    kernelSteps_ = static_cast<int>(blocks);
     // faces s_i = r_i/R, volume fractions and volume centroids of the shells
     std::vector<double> face(n + 1), centroid(n);
     for (long i = 0; i <= n; ++i)
@@ -193,7 +197,7 @@ double KernelDiffusion::diffusivity(double temperature) const
 void KernelDiffusion::initialise(double moisture, double* state) const
 {
     // uniform: mode 0 alone
-    std::fill(state, state + stateSize(), 0.0);
+    std::fill(state, state + stateSize(), 0.0); // and no block under way
     state[0] = moisture;
     state[shells()] = moisture;
 }
@@ -310,14 +314,32 @@ double KernelDiffusion::rate(const Kernel& kernel, double, const double* state, 
 double KernelDiffusion::advance(const Kernel& kernel, double& moisture, double* state, const MoistAir& air,
                                 double massTransferCoefficient, double dt) const
 {
-    return step(kernel, moisture, state, air, massTransferCoefficient, dt, nullptr);
+    double latent;
+    return advanceWithLatentHeat(kernel, moisture, state, air, massTransferCoefficient, dt, latent);
 }
 
 double KernelDiffusion::advanceWithLatentHeat(const Kernel& kernel, double& moisture, double* state,
                                               const MoistAir& air, double massTransferCoefficient, double dt,
                                               double& latentHeat) const
 {
-    return step(kernel, moisture, state, air, massTransferCoefficient, dt, &latentHeat);
+    if (kernelSteps_ == 1)
+        return step(kernel, moisture, state, air, massTransferCoefficient, dt, &latentHeat);
+    checkStep(moisture, massTransferCoefficient, dt);
+    const int n = shells();
+    double& left = state[n + 1];
+    if (left == 0.0)
+    {
+        // a block starts: the kernel over kernelSteps steps of this dt, its
+        // water then released in equal shares (the last lands X on a_0)
+        double x = moisture;
+        step(kernel, x, state, air, massTransferCoefficient, kernelSteps_ * dt, &state[n + 2]);
+        left = kernelSteps_;
+    }
+    latentHeat = state[n + 2];
+    const double old = moisture;
+    moisture = left == 1.0 ? state[0] : moisture - (moisture - state[0]) / left;
+    left -= 1.0;
+    return kernel.dryMass * (old - moisture);
 }
 
 double KernelDiffusion::step(const Kernel& kernel, double& moisture, double* state, const MoistAir& air,
@@ -359,6 +381,8 @@ double KernelDiffusion::step(const Kernel& kernel, double& moisture, double* sta
 
 double KernelDiffusion::latentHeat(const Kernel& kernel, double, const double* state) const
 {
+    // within a block, the block's (taken at its start)
+    if (kernelSteps_ > 1 && state[shells() + 1] > 0.0) return state[shells() + 2];
     return isotherm().latentHeat(state[shells()], kernel.temperature);
 }
 

@@ -64,10 +64,13 @@ Parameters reaProps(const std::string& a = "1", const std::string& b = "5", cons
     return p;
 }
 
-Parameters diffusionProps(const std::string& shells = "15")
+Parameters diffusionProps(const std::string& shells = "15", const std::string& kernelSteps = "1")
 {
     Parameters p("constant/couplingProperties/kernelDiffusionProps");
-    p.set("D0", "5e-6").set("activationEnergy", "30000").set("nShells", shells);
+    p.set("D0", "5e-6")
+        .set("activationEnergy", "30000")
+        .set("nShells", shells)
+        .set("kernelSteps", kernelSteps);
     return p;
 }
 
@@ -126,6 +129,10 @@ TEST(DryingModels, BadNamesAndMissingParametersNameTheKey)
     EXPECT_EQ(errorOf("kernelDiffusion", diffusionProps("1")),
               "constant/couplingProperties/kernelDiffusionProps: key 'nShells' expected a number of shells "
               "from 2 to 200, got '1'");
+    EXPECT_EQ(
+        errorOf("kernelDiffusion", diffusionProps("15", "0")),
+        "constant/couplingProperties/kernelDiffusionProps: key 'kernelSteps' expected a number of coupling "
+        "steps from 1 to 1000, got '0'");
     Parameters badIsotherm = diffusionProps();
     badIsotherm.set("isotherm", "GAB");
     EXPECT_EQ(errorOf("kernelDiffusion", badIsotherm),
@@ -543,10 +550,12 @@ TEST(KernelDiffusion, EachStepLosesWhatTheFilmCarriesAtItsSurface)
 TEST(DryingModels, LatentHeatAndAdvanceInOneCallAreTheTwoCalls)
 {
     const MoistAir hot{420.0, 0.012, 101325.0};
-    for (const char* name : {"freeWater", "reactionEngineering", "kernelDiffusion"})
+    for (const char* name : {"freeWater", "reactionEngineering", "kernelDiffusion", "kernelDiffusion 5"})
     {
-        const std::string model = name;
-        auto m = make(model, model == "kernelDiffusion" ? diffusionProps() : reaProps());
+        const std::string model = std::string(name).substr(0, std::string(name).find(' '));
+        auto m = make(model, model != "kernelDiffusion" ? reaProps()
+                             : name == model            ? diffusionProps()
+                                                        : diffusionProps("15", "5"));
         std::vector<double> one(m->stateSize() + 1), two(one);
         m->initialise(0.33, one.data());
         m->initialise(0.33, two.data());
@@ -564,4 +573,95 @@ TEST(DryingModels, LatentHeatAndAdvanceInOneCallAreTheTwoCalls)
             EXPECT_EQ(one, two) << name << " " << dt;
         }
     }
+}
+
+// kernelSteps M: the kernel advanced once per M coupling steps over M dt (the
+// gas, k_m and T_p of the block's first step), its water released in M equal
+// shares. A particle of the spouted bed, 3e-4 s steps, crossing between spout
+// (hot fast gas) and downcomer (cooler, slower) every 0.1 s with its own
+// temperature following, for 20 s: against the resolved kernel (M = 1) the
+// water lost differs by far less than the 0.5 % the shells are verified to
+// (Crank), though a block holds the surroundings for 3 ms of each 100 ms leg:
+// at the blocks' ends within 1e-3 from the fifth cycle (1 s) on, 2.5e-4 at 20
+// s, and so the latent heat taken.
+TEST(KernelDiffusion, KernelStepsFollowTheResolvedKernelAcrossSpoutAndDowncomer)
+{
+    const KernelDiffusion resolved(diffusionProps()), blocks(diffusionProps("15", "10"));
+    EXPECT_EQ(blocks.kernelSteps(), 10);
+    EXPECT_EQ(blocks.stateSize(), resolved.stateSize() + 2);
+    std::vector<double> one(resolved.stateSize()), ten(blocks.stateSize());
+    resolved.initialise(0.33, one.data());
+    blocks.initialise(0.33, ten.data());
+    double x1 = 0.33, x10 = 0.33, water1 = 0.0, water10 = 0.0, heat1 = 0.0, heat10 = 0.0, worst = 0.0;
+    const double dt = 3e-4;
+    for (int i = 0; i < 66667; ++i)
+    {
+        const double t = i * dt, phase = std::fmod(t, 0.2);
+        const bool spout = phase < 0.1;
+        const MoistAir gas{spout ? 420.0 : 345.0, spout ? 0.008 : 0.014, 101325.0};
+        const double temperature = spout ? 330.0 + 200.0 * phase : 350.0 - 150.0 * (phase - 0.1);
+        const Kernel k = kernelAt(temperature);
+        double l1 = 0.0, l10 = 0.0;
+        const double w1 = resolved.advanceWithLatentHeat(k, x1, one.data(), gas, spout ? 0.09 : 0.02, dt, l1);
+        const double w10 =
+            blocks.advanceWithLatentHeat(k, x10, ten.data(), gas, spout ? 0.09 : 0.02, dt, l10);
+        water1 += w1;
+        water10 += w10;
+        heat1 += w1 * l1;
+        heat10 += w10 * l10;
+        // at the end of each block X is the kernel's mean again (between, the
+        // block's water is still being released: up to half a block behind)
+        if (i % 10 == 9 && t > 1.0) worst = std::max(worst, std::fabs(water10 / water1 - 1.0));
+    }
+    std::printf("water %.6e vs %.6e, worst relative %.3e, heat %.3e\n", water1, water10, worst,
+                heat10 / heat1 - 1);
+    EXPECT_GT(water1, 1e-3 * kernelAt(300.0).dryMass);
+    EXPECT_LT(worst, 1e-3);
+    EXPECT_LT(std::fabs(heat10 / heat1 - 1.0), 1e-3);
+}
+
+// Conservative step by step and over a block: each share is m_d (X_old -
+// X_new), a block's shares add up to what the kernel lost, X ends the block
+// on the mean of the shells; and the state is all there is (a copy of it
+// mid-block, as a restart holds it, continues the same to the bit).
+TEST(KernelDiffusion, KernelStepsConserveAndRestartFromTheirState)
+{
+    const KernelDiffusion blocks(diffusionProps("15", "7"));
+    const Kernel k = kernelAt(350.0);
+    std::vector<double> state(blocks.stateSize()), shells(blocks.shells());
+    blocks.initialise(0.33, state.data());
+    double x = 0.33;
+    for (int block = 0; block < 3; ++block)
+    {
+        const double start = x;
+        double water = 0.0;
+        for (int i = 0; i < 7; ++i)
+        {
+            const double before = x;
+            const double w = blocks.advance(k, x, state.data(), air, km, 3e-4);
+            EXPECT_EQ(w, k.dryMass * (before - x));
+            EXPECT_LT(x, before);
+            water += w;
+        }
+        blocks.shellMoistures(state.data(), shells.data());
+        double mean = 0.0;
+        for (int i = 0; i < blocks.shells(); ++i) mean += blocks.weight(i) * shells[i];
+        EXPECT_EQ(x, state[0]);
+        EXPECT_NEAR(x, mean, 1e-15);
+        EXPECT_NEAR(water, k.dryMass * (start - x), 1e-16 * k.dryMass);
+    }
+    for (int i = 0; i < 3; ++i) blocks.advance(k, x, state.data(), air, km, 3e-4); // mid-block
+    const KernelDiffusion restarted(diffusionProps("15", "7"));
+    std::vector<double> copy(state);
+    double y = x;
+    for (int i = 0; i < 20; ++i)
+    {
+        double l1 = 0.0, l2 = 0.0;
+        const double w1 = blocks.advanceWithLatentHeat(k, x, state.data(), air, km, 3e-4, l1);
+        const double w2 = restarted.advanceWithLatentHeat(k, y, copy.data(), air, km, 3e-4, l2);
+        EXPECT_EQ(w1, w2);
+        EXPECT_EQ(l1, l2);
+        EXPECT_EQ(x, y);
+    }
+    EXPECT_EQ(state, copy);
 }
