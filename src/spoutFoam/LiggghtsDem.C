@@ -476,7 +476,8 @@ std::vector<int> LiggghtsDem::localAtoms() const
 
 
 // The particles come in id order, the atoms in LIGGGHTS' own (spatially
-// sorted) order: each particle's rows are fetched a few particles ahead.
+// sorted) order: each particle's rows are fetched a few particles ahead, and
+// the row pointers of the 2-d arrays (f, the state) twice as far ahead.
 static constexpr std::size_t prefetchAhead = 8;
 
 
@@ -494,6 +495,10 @@ std::vector<std::size_t> LiggghtsDem::localMoisture(KernelMoisture& kernels) con
     double* const* state = width ? moistureState_->array_atom : nullptr;
     for (std::size_t k = 0; k < n; ++k)
     {
+        if (width && k + 2*prefetchAhead < n)
+        {
+            __builtin_prefetch(state + atoms[k + 2*prefetchAhead]);
+        }
         if (k + prefetchAhead < n)
         {
             const int ahead = atoms[k + prefetchAhead];
@@ -537,6 +542,12 @@ void LiggghtsDem::setMoisture(const KernelMoisture& kernels, const Vec3& g)
     double** f = atom->f;
     for (std::size_t k = 0; k < n; ++k)
     {
+        if (k + 2*prefetchAhead < n)
+        {
+            const int further = atoms[k + 2*prefetchAhead];
+            __builtin_prefetch(f + further);
+            if (width) __builtin_prefetch(state + further);
+        }
         if (k + prefetchAhead < n)
         {
             const int ahead = atoms[k + prefetchAhead];
