@@ -29,6 +29,14 @@ double DryingModel::latentHeat(const Kernel& kernel, double moisture, const doub
     return isotherm().latentHeat(moisture, kernel.temperature);
 }
 
+double DryingModel::advanceWithLatentHeat(const Kernel& kernel, double& moisture, double* state,
+                                          const MoistAir& air, double massTransferCoefficient, double dt,
+                                          double& latentHeat) const
+{
+    latentHeat = this->latentHeat(kernel, moisture, state);
+    return advance(kernel, moisture, state, air, massTransferCoefficient, dt);
+}
+
 std::unique_ptr<SorptionIsotherm> DryingModel::isothermOf(const Parameters& props)
 {
     return SorptionIsotherm::New(props.getWord("isotherm", "modifiedHenderson"), props);

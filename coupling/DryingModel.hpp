@@ -67,6 +67,14 @@ public:
     virtual double advance(const Kernel& kernel, double& moisture, double* state, const MoistAir& air,
                            double massTransferCoefficient, double dt) const = 0;
 
+    // latentHeat() of the kernel as it is, then advance(): what a coupling
+    // step asks of every particle (MoistureExchange), in one call so that a
+    // model can share what the two evaluate. The same values as the two
+    // calls (the default makes them).
+    virtual double advanceWithLatentHeat(const Kernel& kernel, double& moisture, double* state,
+                                         const MoistAir& air, double massTransferCoefficient, double dt,
+                                         double& latentHeat) const;
+
     // Heat the kernel gives up per kg of water evaporated [J/kg]: the grain's
     // heat of vaporisation at the moisture where the water leaves
     // (SorptionIsotherm::latentHeat), free water's for freeWater.

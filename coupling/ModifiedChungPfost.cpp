@@ -50,4 +50,12 @@ double ModifiedChungPfost::lnWaterActivitySlope(double moisture, double temperat
     return std::exp((kE - moisture) / kF) / (tPlusC * tPlusC);
 }
 
+SorptionIsotherm::Activity ModifiedChungPfost::activity(double moisture, double temperature) const
+{
+    const double tPlusC = temperature - 273.15 + kC;
+    const double u = std::exp((kE - moisture) / kF);
+    const double aw = std::exp(-u / tPlusC);
+    return {aw, aw * u / (tPlusC * kF), u / (tPlusC * tPlusC)};
+}
+
 } // namespace spoutlab

@@ -26,6 +26,7 @@ public:
     double waterActivity(double moisture, double temperature) const override;
     double waterActivityDerivative(double moisture, double temperature) const override;
     double lnWaterActivitySlope(double moisture, double temperature) const override;
+    Activity activity(double moisture, double temperature) const override;
     std::string name() const override { return "modifiedChungPfost"; }
 };
 

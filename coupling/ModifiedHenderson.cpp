@@ -40,12 +40,14 @@ double ModifiedHenderson::waterActivity(double moisture, double temperature) con
     return -std::expm1(-exponent(moisture, temperature));
 }
 
+// With z = A (t + C) M^B: a_w = 1 - e^-z, from expm1 for small z, and e^-z
+// taken as 1 + expm1(-z) so that one pow and one expm1 give all three.
 double ModifiedHenderson::waterActivityDerivative(double moisture, double temperature) const
 {
     // d/dX (1 - e^-z) = e^-z dz/dX, dz/dX = B z/X (z = 0 at X = 0 with B > 1)
     if (!(moisture > 0.0)) return 0.0;
     const double z = exponent(moisture, temperature);
-    return std::exp(-z) * kB * z / moisture;
+    return (1.0 + std::expm1(-z)) * kB * z / moisture;
 }
 
 double ModifiedHenderson::lnWaterActivitySlope(double moisture, double temperature) const
@@ -54,7 +56,17 @@ double ModifiedHenderson::lnWaterActivitySlope(double moisture, double temperatu
     const double tPlusC = temperature - 273.15 + kC;
     if (z == 0.0) return 1.0 / tPlusC; // a_w -> z, d ln a_w/dt -> 1/(t + C)
     // A M^B (1 - a_w)/a_w = (z/(t + C)) e^-z / (1 - e^-z)
-    return z / tPlusC * std::exp(-z) / -std::expm1(-z);
+    const double em = std::expm1(-z);
+    return z / tPlusC * (1.0 + em) / -em;
+}
+
+SorptionIsotherm::Activity ModifiedHenderson::activity(double moisture, double temperature) const
+{
+    const double z = exponent(moisture, temperature);
+    const double tPlusC = temperature - 273.15 + kC;
+    const double em = std::expm1(-z);
+    return {-em, moisture > 0.0 ? (1.0 + em) * kB * z / moisture : 0.0,
+            z == 0.0 ? 1.0 / tPlusC : z / tPlusC * (1.0 + em) / -em};
 }
 
 } // namespace spoutlab

@@ -50,9 +50,9 @@ MoistureStep MoistureExchange::advance(const CellLocator& mesh, const std::vecto
         if (map.cells(i).size() == 0) continue;
         const Kernel kernel{2.0 * particles[i].radius, kernels.dryMass[i], particles[i].temperature};
         double* state = width ? &kernels.state[width * i] : nullptr;
-        out.latentHeat[i] = model_->latentHeat(kernel, kernels.moisture[i], state);
         const MoistAir air{Tg, W, pressure_};
-        const double dW = model_->advance(kernel, kernels.moisture[i], state, air, km, dt);
+        const double dW =
+            model_->advanceWithLatentHeat(kernel, kernels.moisture[i], state, air, km, dt, out.latentHeat[i]);
         out.waterLost[i] = dW;
         for (const CellWeight& cw : map.cells(i))
         {

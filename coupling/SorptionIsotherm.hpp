@@ -45,8 +45,21 @@ public:
     // (d ln a_w / dT) at constant X [1/K], finite at X -> 0.
     virtual double lnWaterActivitySlope(double moisture, double temperature) const = 0;
 
+    // The three above at one (X, T) from one evaluation of the isotherm, what
+    // a drying step asks for several times per particle; exactly the values
+    // the three functions return (the default calls them).
+    struct Activity
+    {
+        double value;      // a_w
+        double derivative; // d a_w / dX
+        double lnSlope;    // (d ln a_w / dT)_X [1/K]
+    };
+    virtual Activity activity(double moisture, double temperature) const;
+
     // Heat to evaporate 1 kg of the grain's water at X and T [J/kg] (above).
     double latentHeat(double moisture, double temperature) const;
+    // ... with (d ln a_w / dT)_X already known (Activity::lnSlope).
+    static double latentHeat(double temperature, const Activity& activity);
 
     virtual std::string name() const = 0;
 

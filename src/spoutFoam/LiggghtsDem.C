@@ -457,28 +457,64 @@ LiggghtsDem::HeatContent LiggghtsDem::heatContent() const
 }
 
 
+std::vector<int> LiggghtsDem::localAtoms() const
+{
+    // the atom map (atom_modify map array, required of coupled inputs)
+    auto* atom = lmp_->atom;
+    std::vector<int> atoms(localIds_.size());
+    for (std::size_t k = 0; k < localIds_.size(); ++k)
+    {
+        const int i = atom->map(int(localIds_[k]));
+        if (i < 0 || i >= atom->nlocal)
+        {
+            throw std::logic_error("LiggghtsDem: an atom left this rank between steps");
+        }
+        atoms[k] = i;
+    }
+    return atoms;
+}
+
+
+// The particles come in id order, the atoms in LIGGGHTS' own (spatially
+// sorted) order: each particle's rows are fetched a few particles ahead, and
+// the row pointers of the 2-d arrays (f, the state) twice as far ahead.
+static constexpr std::size_t prefetchAhead = 8;
+
+
 std::vector<std::size_t> LiggghtsDem::localMoisture(KernelMoisture& kernels) const
 {
     std::vector<std::size_t> fresh;
     auto* atom = lmp_->atom;
     const std::size_t n = localIds_.size(), width = std::size_t(moistureStateSize_);
+    const std::vector<int> atoms = localAtoms();
     kernels.dryMass.resize(n);
     kernels.moisture.resize(n);
     kernels.state.resize(width*n);
+    const double* X = moisture_->vector_atom;
+    const double* md = dryMass_->vector_atom;
+    double* const* state = width ? moistureState_->array_atom : nullptr;
     for (std::size_t k = 0; k < n; ++k)
     {
-        const int i = atom->map(int(localIds_[k]));
-        kernels.moisture[k] = moisture_->vector_atom[i];
-        kernels.dryMass[k] = dryMass_->vector_atom[i];
+        if (width && k + 2*prefetchAhead < n)
+        {
+            __builtin_prefetch(state + atoms[k + 2*prefetchAhead]);
+        }
+        if (k + prefetchAhead < n)
+        {
+            const int ahead = atoms[k + prefetchAhead];
+            __builtin_prefetch(X + ahead);
+            __builtin_prefetch(md + ahead);
+            if (width) __builtin_prefetch(state[ahead]);
+        }
+        const int i = atoms[k];
+        kernels.moisture[k] = X[i];
+        kernels.dryMass[k] = md[i];
         if (!(kernels.dryMass[k] > 0))
         {
             kernels.dryMass[k] = atom->rmass[i]/(1 + kernels.moisture[k]);
             fresh.push_back(k);
         }
-        for (std::size_t s = 0; s < width; ++s)
-        {
-            kernels.state[width*k + s] = moistureState_->array_atom[i][s];
-        }
+        if (width) std::copy_n(state[i], width, &kernels.state[width*k]);
     }
     return fresh;
 }
@@ -486,37 +522,57 @@ std::vector<std::size_t> LiggghtsDem::localMoisture(KernelMoisture& kernels) con
 
 void LiggghtsDem::setMoisture(const KernelMoisture& kernels, const Vec3& g)
 {
-    const std::size_t width = std::size_t(moistureStateSize_);
-    std::vector<double> rows;
-    rows.reserve((2 + width)*kernels.moisture.size());
-    for (std::size_t k = 0; k < kernels.moisture.size(); ++k)
-    {
-        rows.push_back(kernels.moisture[k]);
-        rows.push_back(kernels.dryMass[k]);
-        for (std::size_t s = 0; s < width; ++s) rows.push_back(kernels.state[width*k + s]);
-    }
-    auto* atom = lmp_->atom;
-    LAMMPS_NS::FixPropertyAtom* X = moisture_;
-    LAMMPS_NS::FixPropertyAtom* md = dryMass_;
-    LAMMPS_NS::FixPropertyAtom* state = moistureState_;
-    toAtoms
+    const std::size_t n = localIds_.size(), width = std::size_t(moistureStateSize_);
+    if
     (
-        rows, int(2 + width),
-        [=](int i, const double* r)
+        kernels.moisture.size() != n || kernels.dryMass.size() != n
+     || kernels.state.size() != width*n
+    )
+    {
+        throw std::logic_error("LiggghtsDem: per-particle data differs from localParticles");
+    }
+    const std::vector<int> atoms = localAtoms();
+    auto* atom = lmp_->atom;
+    double* X = moisture_->vector_atom;
+    double* md = dryMass_->vector_atom;
+    double* const* state = width ? moistureState_->array_atom : nullptr;
+    double* rmass = atom->rmass;
+    double* density = atom->density;
+    const double* radius = atom->radius;
+    double** f = atom->f;
+    for (std::size_t k = 0; k < n; ++k)
+    {
+        if (k + 2*prefetchAhead < n)
         {
-            X->vector_atom[i] = r[0];
-            md->vector_atom[i] = r[1];
-            for (std::size_t s = 0; s < width; ++s) state->array_atom[i][s] = r[2 + s];
-            const double m = r[1]*(1 + r[0]);
-            const double dm = m - atom->rmass[i];
-            atom->f[i][0] += dm*g.x;
-            atom->f[i][1] += dm*g.y;
-            atom->f[i][2] += dm*g.z;
-            atom->rmass[i] = m;
-            const double r3 = atom->radius[i]*atom->radius[i]*atom->radius[i];
-            atom->density[i] = m/(4.0/3.0*3.14159265358979323846*r3);
+            const int further = atoms[k + 2*prefetchAhead];
+            __builtin_prefetch(f + further);
+            if (width) __builtin_prefetch(state + further);
         }
-    );
+        if (k + prefetchAhead < n)
+        {
+            const int ahead = atoms[k + prefetchAhead];
+            __builtin_prefetch(X + ahead, 1);
+            __builtin_prefetch(md + ahead, 1);
+            __builtin_prefetch(rmass + ahead, 1);
+            __builtin_prefetch(density + ahead, 1);
+            __builtin_prefetch(radius + ahead);
+            __builtin_prefetch(f[ahead], 1);
+            if (width) __builtin_prefetch(state[ahead], 1);
+        }
+        const int i = atoms[k];
+        const double x = kernels.moisture[k], dry = kernels.dryMass[k];
+        X[i] = x;
+        md[i] = dry;
+        if (width) std::copy_n(&kernels.state[width*k], width, state[i]);
+        const double m = dry*(1 + x);
+        const double dm = m - rmass[i];
+        f[i][0] += dm*g.x;
+        f[i][1] += dm*g.y;
+        f[i][2] += dm*g.z;
+        rmass[i] = m;
+        const double r3 = radius[i]*radius[i]*radius[i];
+        density[i] = m/(4.0/3.0*3.14159265358979323846*r3);
+    }
 }
 
 

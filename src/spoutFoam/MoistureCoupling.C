@@ -226,12 +226,24 @@ void MoistureCoupling::checkSaturation(const Foam::volScalarField& T) const
 
 void MoistureCoupling::updateHumidity(const Foam::volScalarField& T)
 {
-    const double p = exchange_.pressure();
+    updateHumidityRatio();
+    updateRelativeHumidity(T);
+}
+
+
+void MoistureCoupling::updateHumidityRatio()
+{
     W_ = Y_/(1 - Y_);
-    forAll(RH_, i) RH_[i] = relativeHumidity(MoistAir{T[i], W_[i], p});
-    RH_.correctBoundaryConditions();
     cp_ = (1 - Y_)*Foam::dimensionedScalar("cpAir", dimSpecificHeat, cpAir_)
         + Y_*Foam::dimensionedScalar("cpVapour", dimSpecificHeat, psy::kCpVapour);
+}
+
+
+void MoistureCoupling::updateRelativeHumidity(const Foam::volScalarField& T)
+{
+    const double p = exchange_.pressure();
+    forAll(RH_, i) RH_[i] = relativeHumidity(MoistAir{T[i], W_[i], p});
+    RH_.correctBoundaryConditions();
 }
 
 
@@ -296,7 +308,7 @@ void MoistureCoupling::dryParticles
 }
 
 
-void MoistureCoupling::solveVapour(const Foam::volScalarField& T)
+void MoistureCoupling::solveVapour()
 {
     const Foam::dimensionedScalar Dv("Dv", Foam::dimViscosity, Dv_);
     const Foam::dimensionedScalar rho("rho", Foam::dimDensity, rho_);
@@ -310,7 +322,7 @@ void MoistureCoupling::solveVapour(const Foam::volScalarField& T)
         Sv_/rho
     );
     YEqn.solve();
-    updateHumidity(T);
+    updateHumidityRatio();
 }
 
 

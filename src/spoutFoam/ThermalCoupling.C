@@ -108,12 +108,12 @@ void ThermalCoupling::solveGas(const RunGuards& guards)
 {
     if (moisture_)
     {
-        moisture_->solveVapour(heat_->T());
+        moisture_->solveVapour();
         guards.checkField(moisture_->Y());
     }
     heat_->solveGas();
     guards.checkField(heat_->T());
-    if (moisture_) moisture_->updateHumidity(heat_->T());
+    if (moisture_) moisture_->updateRelativeHumidity(heat_->T());
 }
 
 

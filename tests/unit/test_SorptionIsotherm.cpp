@@ -119,6 +119,27 @@ TEST(SorptionIsotherm, InverseAndDerivativesAreConsistent)
     EXPECT_NEAR(make("modifiedHenderson")->lnWaterActivitySlope(0.0, 313.15), 1.0 / 89.81, 1e-15);
 }
 
+// activity() is the drying step's shortcut to the three functions: the same
+// values to the last bit, dry grain and hot air included.
+TEST(SorptionIsotherm, ActivityIsTheThreeFunctionsInOne)
+{
+    for (const char* name : {"modifiedHenderson", "modifiedChungPfost"})
+    {
+        auto iso = make(name);
+        for (double t : {273.15, 313.15, 353.15, 423.15})
+        {
+            for (double x : {0.0, 1e-9, 0.01, 0.08, 0.15, 0.25, 0.3333, 0.45, 0.8})
+            {
+                const SorptionIsotherm::Activity a = iso->activity(x, t);
+                EXPECT_EQ(a.value, iso->waterActivity(x, t)) << name << " " << t << " " << x;
+                EXPECT_EQ(a.derivative, iso->waterActivityDerivative(x, t)) << name << " " << t << " " << x;
+                EXPECT_EQ(a.lnSlope, iso->lnWaterActivitySlope(x, t)) << name << " " << t << " " << x;
+                EXPECT_EQ(SorptionIsotherm::latentHeat(t, a), iso->latentHeat(x, t)) << name;
+            }
+        }
+    }
+}
+
 // h_fg,grain = h_fg(T) + R_v T^2 (d ln a_w/dT)_X at 40 C (the middle of the
 // measured 86-122 F), free water 2501e3 - 2326 40 = 2.40796e6 J/kg:
 //   modified Henderson, 22 %: M^B = 317.300, z = 2.46614, a_w = 0.915088,

@@ -96,7 +96,8 @@ class Geometry:
     # as its <model>Props (coupling/DryingModel.hpp and the models' headers)
     DRYING_SETTINGS = {'freeWater': (),
                        'reactionEngineering': ('a', 'b', 'c', 'isotherm'),
-                       'kernelDiffusion': ('D0', 'activationEnergy', 'nShells', 'isotherm')}
+                       'kernelDiffusion': ('D0', 'activationEnergy', 'nShells', 'kernelSteps',
+                                           'isotherm')}
 
     def _read_drying(self, d, path, number):
         if not self.heat:
