@@ -16,8 +16,8 @@ MoistureExchange::MoistureExchange(std::unique_ptr<DryingModel> model, double pr
 
 void MoistureExchange::initialise(KernelMoisture& kernels, std::size_t i) const
 {
-    const std::size_t width = static_cast<std::size_t>(model_->stateSize());
-    model_->initialise(kernels.moisture[i], width ? &kernels.state[width * i] : nullptr);
+    model_->initialise(kernels.moisture[i],
+                       kernels.stateOf(i, static_cast<std::size_t>(model_->stateSize())));
 }
 
 MoistureStep MoistureExchange::advance(const CellLocator& mesh, const std::vector<Particle>& particles,
@@ -29,7 +29,9 @@ MoistureStep MoistureExchange::advance(const CellLocator& mesh, const std::vecto
     const std::size_t width = static_cast<std::size_t>(model_->stateSize());
     if (gas.temperature.size() != nCells || gas.humidityRatio.size() != nCells
         || gas.massTransfer.size() != nCells || map.nParticles() != n || kernels.dryMass.size() != n
-        || kernels.moisture.size() != n || kernels.state.size() != width * n || !(dt > 0.0))
+        || kernels.moisture.size() != n
+        || (kernels.stateRows.empty() ? kernels.state.size() != width * n : kernels.stateRows.size() != n)
+        || !(dt > 0.0))
     {
         throw std::invalid_argument("MoistureExchange: field, particle or state sizes do not match");
     }
@@ -38,8 +40,17 @@ MoistureStep MoistureExchange::advance(const CellLocator& mesh, const std::vecto
     out.latentHeat.assign(n, 0.0);
     // per cell: water and water x T_p, with the halo's shares sent to their owners
     std::vector<double> sums(2 * nCells, 0.0);
+    // state kept elsewhere (stateRows, in the caller's order) is fetched a
+    // few particles ahead, all of its cache lines
+    constexpr std::size_t ahead = 8;
     for (std::size_t i = 0; i < n; ++i)
     {
+        if (!kernels.stateRows.empty() && i + ahead < n)
+        {
+            const double* row = kernels.stateRows[i + ahead];
+            for (std::size_t k = 0; k < width; k += 8) __builtin_prefetch(row + k, 1);
+            __builtin_prefetch(row + width - 1, 1);
+        }
         double Tg = 0.0, W = 0.0, km = 0.0;
         for (const CellWeight& cw : map.cells(i))
         {
@@ -49,7 +60,7 @@ MoistureStep MoistureExchange::advance(const CellLocator& mesh, const std::vecto
         }
         if (map.cells(i).size() == 0) continue;
         const Kernel kernel{2.0 * particles[i].radius, kernels.dryMass[i], particles[i].temperature};
-        double* state = width ? &kernels.state[width * i] : nullptr;
+        double* state = kernels.stateOf(i, width);
         const MoistAir air{Tg, W, pressure_};
         const double dW =
             model_->advanceWithLatentHeat(kernel, kernels.moisture[i], state, air, km, dt, out.latentHeat[i]);

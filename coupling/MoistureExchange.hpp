@@ -40,6 +40,17 @@ struct KernelMoisture
     std::vector<double> dryMass;  // m_d [kg]
     std::vector<double> moisture; // X [kg water / kg dry solid]
     std::vector<double> state;    // the model's stateSize() values per particle
+    // or, when not empty, where particle i's stateSize() values are kept
+    // (the DEM's own per-atom rows, used in place: valid only until the DEM
+    // moves its atoms again); state is then unused
+    std::vector<double*> stateRows;
+
+    // particle i's state (width: the model's stateSize())
+    double* stateOf(std::size_t i, std::size_t width)
+    {
+        if (!width) return nullptr;
+        return stateRows.empty() ? &state[width * i] : stateRows[i];
+    }
 };
 
 // Gas per cell (own and halo cells; not owned).

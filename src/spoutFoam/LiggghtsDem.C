@@ -489,22 +489,20 @@ std::vector<std::size_t> LiggghtsDem::localMoisture(KernelMoisture& kernels) con
     const std::vector<int> atoms = localAtoms();
     kernels.dryMass.resize(n);
     kernels.moisture.resize(n);
-    kernels.state.resize(width*n);
+    // the state stays in the atoms' rows, used there until setMoisture
+    kernels.state.clear();
+    kernels.stateRows.assign(width ? n : 0, nullptr);
     const double* X = moisture_->vector_atom;
     const double* md = dryMass_->vector_atom;
     double* const* state = width ? moistureState_->array_atom : nullptr;
     for (std::size_t k = 0; k < n; ++k)
     {
-        if (width && k + 2*prefetchAhead < n)
-        {
-            __builtin_prefetch(state + atoms[k + 2*prefetchAhead]);
-        }
         if (k + prefetchAhead < n)
         {
             const int ahead = atoms[k + prefetchAhead];
             __builtin_prefetch(X + ahead);
             __builtin_prefetch(md + ahead);
-            if (width) __builtin_prefetch(state[ahead]);
+            if (width) __builtin_prefetch(state + ahead);
         }
         const int i = atoms[k];
         kernels.moisture[k] = X[i];
@@ -514,7 +512,7 @@ std::vector<std::size_t> LiggghtsDem::localMoisture(KernelMoisture& kernels) con
             kernels.dryMass[k] = atom->rmass[i]/(1 + kernels.moisture[k]);
             fresh.push_back(k);
         }
-        if (width) std::copy_n(state[i], width, &kernels.state[width*k]);
+        if (width) kernels.stateRows[k] = state[i];
     }
     return fresh;
 }
@@ -526,7 +524,7 @@ void LiggghtsDem::setMoisture(const KernelMoisture& kernels, const Vec3& g)
     if
     (
         kernels.moisture.size() != n || kernels.dryMass.size() != n
-     || kernels.state.size() != width*n
+     || (width && kernels.stateRows.size() != n)
     )
     {
         throw std::logic_error("LiggghtsDem: per-particle data differs from localParticles");
@@ -542,12 +540,7 @@ void LiggghtsDem::setMoisture(const KernelMoisture& kernels, const Vec3& g)
     double** f = atom->f;
     for (std::size_t k = 0; k < n; ++k)
     {
-        if (k + 2*prefetchAhead < n)
-        {
-            const int further = atoms[k + 2*prefetchAhead];
-            __builtin_prefetch(f + further);
-            if (width) __builtin_prefetch(state + further);
-        }
+        if (k + 2*prefetchAhead < n) __builtin_prefetch(f + atoms[k + 2*prefetchAhead]);
         if (k + prefetchAhead < n)
         {
             const int ahead = atoms[k + prefetchAhead];
@@ -557,13 +550,16 @@ void LiggghtsDem::setMoisture(const KernelMoisture& kernels, const Vec3& g)
             __builtin_prefetch(density + ahead, 1);
             __builtin_prefetch(radius + ahead);
             __builtin_prefetch(f[ahead], 1);
-            if (width) __builtin_prefetch(state[ahead], 1);
         }
         const int i = atoms[k];
         const double x = kernels.moisture[k], dry = kernels.dryMass[k];
         X[i] = x;
         md[i] = dry;
-        if (width) std::copy_n(&kernels.state[width*k], width, state[i]);
+        // the state was stepped in the atom's row (localMoisture)
+        if (width && kernels.stateRows[k] != state[i])
+        {
+            throw std::logic_error("LiggghtsDem: an atom's moisture state moved between steps");
+        }
         const double m = dry*(1 + x);
         const double dm = m - rmass[i];
         f[i][0] += dm*g.x;

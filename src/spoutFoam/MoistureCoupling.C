@@ -273,6 +273,7 @@ void MoistureCoupling::startParticles(LiggghtsDem& dem, const Foam::volScalarFie
         );
     }
     if (!fresh.empty()) dem.setMoisture(kernels_, Vec3{0, 0, 0});
+    kernels_.stateRows.clear();   // LIGGGHTS' rows: valid only until it runs
 }
 
 
@@ -298,6 +299,7 @@ void MoistureCoupling::dryParticles
     );
     guards.checkParticles("moisture", kernels_.moisture, particles);
     dem.setMoisture(kernels_, g);
+    kernels_.stateRows.clear();   // LIGGGHTS' rows: valid only until it runs
     forAll(Sv_, i)
     {
         Sv_[i] = step_.vapourSource[i];

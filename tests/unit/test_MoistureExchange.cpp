@@ -67,7 +67,7 @@ TEST(MoistureExchange, ParticleDriesInTheWeightedGasOfItsCells)
     DividedVoidFraction divided(Parameters("dividedProps"));
     const VoidFractionResult vf = divided.compute(mesh, particles);
     const Gas gas{{350.0, 330.0}, {0.01, 0.02}, {0.04, 0.06}};
-    KernelMoisture kernels{{2.5e-4, 2.5e-4}, {0.3, 0.3}, {}};
+    KernelMoisture kernels{{2.5e-4, 2.5e-4}, {0.3, 0.3}, {}, {}};
     const double dt = 0.01;
     const MoistureStep step = freeWater().advance(mesh, particles, vf.map, gas.fields(), kernels, dt);
 
@@ -111,7 +111,7 @@ TEST(MoistureExchange, GasReceivesTheWaterTheParticlesLose)
         gas.W.push_back(0.005 + 0.02 * u(rng));
         gas.km.push_back(0.03 + 0.04 * u(rng));
     }
-    KernelMoisture kernels{std::vector<double>(40, 2.5e-4), std::vector<double>(40, 0.3), {}};
+    KernelMoisture kernels{std::vector<double>(40, 2.5e-4), std::vector<double>(40, 0.3), {}, {}};
     const double dt = 3e-4;
     const MoistureStep step = freeWater().advance(mesh, particles, vf.map, gas.fields(), kernels, dt);
 
@@ -140,9 +140,70 @@ TEST(MoistureExchange, LostParticleExchangesNothing)
     DividedVoidFraction divided(Parameters("dividedProps"));
     const VoidFractionResult vf = divided.compute(mesh, particles);
     const Gas gas{{350.0}, {0.01}, {0.05}};
-    KernelMoisture kernels{{2.5e-4}, {0.3}, {}};
+    KernelMoisture kernels{{2.5e-4}, {0.3}, {}, {}};
     const MoistureStep step = freeWater().advance(mesh, particles, vf.map, gas.fields(), kernels, 0.01);
     EXPECT_EQ(step.waterLost[0], 0.0);
     EXPECT_EQ(kernels.moisture[0], 0.3);
     EXPECT_EQ(step.vapourSource[0], 0.0);
+}
+
+// The state used in place where the caller keeps it (LIGGGHTS' per-atom
+// rows, here rows of their own scattered in reverse order) steps exactly as
+// the exchange's own contiguous copy: kernel diffusion, kernel stepped every
+// step and once per 3 steps, 7 steps from a fresh start.
+TEST(MoistureExchange, StateInPlaceIsTheStateCopied)
+{
+    const CartesianMesh mesh = CartesianMesh::uniform({0, 0, 0}, {0.08, 0.06, 0.04}, 4, 3, 2);
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    std::vector<Particle> particles;
+    for (long id = 1; id <= 20; ++id)
+    {
+        particles.push_back(kernelAt(id,
+                                     {0.004 + 0.072 * u(rng), 0.004 + 0.052 * u(rng), 0.004 + 0.032 * u(rng)},
+                                     320.0 + 40.0 * u(rng)));
+    }
+    DividedVoidFraction divided(Parameters("dividedProps"));
+    const VoidFractionResult vf = divided.compute(mesh, particles);
+    Gas gas;
+    for (label c = 0; c < mesh.nCells(); ++c)
+    {
+        gas.T.push_back(340.0 + 60.0 * u(rng));
+        gas.W.push_back(0.005 + 0.01 * u(rng));
+        gas.km.push_back(0.03 + 0.04 * u(rng));
+    }
+    for (const char* kernelSteps : {"1", "3"})
+    {
+        Parameters props("kernelDiffusionProps");
+        props.set("D0", "1.4904e-4").set("activationEnergy", "41762").set("kernelSteps", kernelSteps);
+        const MoistureExchange exchange(DryingModel::New("kernelDiffusion", props), p0);
+        const std::size_t n = particles.size(),
+                          width = static_cast<std::size_t>(exchange.model().stateSize());
+        KernelMoisture copied{
+            std::vector<double>(n, 2.5e-4), std::vector<double>(n, 0.3), std::vector<double>(width * n), {}};
+        KernelMoisture inPlace{copied.dryMass, copied.moisture, {}, {}};
+        std::vector<std::vector<double>> rows(n, std::vector<double>(width));
+        for (std::size_t i = 0; i < n; ++i) inPlace.stateRows.push_back(rows[n - 1 - i].data());
+        for (std::size_t i = 0; i < n; ++i)
+        {
+            exchange.initialise(copied, i);
+            exchange.initialise(inPlace, i);
+        }
+        for (int k = 0; k < 7; ++k)
+        {
+            const MoistureStep a = exchange.advance(mesh, particles, vf.map, gas.fields(), copied, 3e-4);
+            const MoistureStep b = exchange.advance(mesh, particles, vf.map, gas.fields(), inPlace, 3e-4);
+            EXPECT_EQ(a.waterLost, b.waterLost) << kernelSteps;
+            EXPECT_EQ(a.latentHeat, b.latentHeat) << kernelSteps;
+            EXPECT_EQ(a.vapourSource, b.vapourSource) << kernelSteps;
+            EXPECT_EQ(copied.moisture, inPlace.moisture) << kernelSteps;
+        }
+        for (std::size_t i = 0; i < n; ++i)
+        {
+            EXPECT_EQ(std::vector<double>(&copied.state[width * i], &copied.state[width * (i + 1)]),
+                      rows[n - 1 - i]);
+        }
+        ASSERT_GT(copied.moisture[0], 0.0);
+        EXPECT_LT(copied.moisture[0], 0.3);
+    }
 }
