@@ -29,6 +29,7 @@ Description
 
 #include <cfenv>
 #include <cstdlib>
+#include <string>
 
 int main(int argc, char *argv[])
 {
@@ -79,7 +80,8 @@ int main(int argc, char *argv[])
     {
         if (Pstream::master())
         {
-            std::cerr << "spoutFoam: " << err.what() << std::endl;
+            // one write: another rank's MPI_Abort banner must not split it
+            std::cerr << (std::string("spoutFoam: ") + err.what() + "\n") << std::flush;
         }
         status = 1;
     }
@@ -87,8 +89,8 @@ int main(int argc, char *argv[])
     {
         // a model outside its domain (e.g. a psychrometric function given a
         // negative humidity): one line, from the rank that found it
-        std::cerr << "spoutFoam: stopped at t = " << runTime.timeName()
-            << " s: " << err.what() << std::endl;
+        std::cerr << ("spoutFoam: stopped at t = " + runTime.timeName() + " s: " + err.what() + "\n")
+            << std::flush;
         status = 1;
     }
 
