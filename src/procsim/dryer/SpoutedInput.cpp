@@ -95,10 +95,11 @@ Residence readResidence(const YamlInput& r)
     return res;
 }
 
-void same(const YamlInput& stats, const std::string& key, double theirs, double ours, const std::string& what)
+void same(const YamlInput& stats, const std::string& key, double theirs, double ours, const std::string& what,
+          const std::string& caseFile)
 {
     if (std::fabs(theirs - ours) <= kSameRel * std::max(std::fabs(ours), 1e-12)) return;
-    throw stats.error(key, "the case's " + what + " " + formatNumber(ours, 8)
+    throw stats.error(key, "the " + what + " of " + caseFile + ", " + formatNumber(ours, 8)
                                + " (statistics of another bed or operating point)");
 }
 
@@ -118,14 +119,15 @@ void readStatistics(const std::string& file, Case& c, const CaseGeometry& g, con
     const YamlInput run = s.child("run");
     c.statisticsRun = run.text("case");
     if (g.hasVelocity)
-        same(run, "u_s", run.number("u_s", "m/s"), g.velocity, "superficial velocity [m/s]");
+        same(run, "u_s", run.number("u_s", "m/s"), g.velocity, "superficial velocity [m/s]", c.file);
     else
         same(s.child("gas"), "inletMassFlow", s.child("gas").number("inletMassFlow"), g.massFlow,
-             "gas mass flow [kg/s]");
+             "gas mass flow [kg/s]", c.file);
     const YamlInput geo = run.child("geometry");
     for (const char* k : kGeometry)
-        same(geo, k, geo.number(k, "m"), g.geometry.at(k), std::string(k) + " [m]");
-    same(run, "particleDiameter", run.number("particleDiameter", "m"), c.diameter, "kernel diameter [m]");
+        same(geo, k, geo.number(k, "m"), g.geometry.at(k), std::string(k) + " [m]", c.file);
+    same(run, "particleDiameter", run.number("particleDiameter", "m"), c.diameter, "kernel diameter [m]",
+         c.file);
     const double particles = run.positive("particles");
     const YamlInput regions = s.child("regions");
     std::vector<std::string> order;
