@@ -227,10 +227,14 @@ void readOperation(const YamlInput& in, Case& c, CaseGeometry& g)
         throw op.error("inlet_temperature_C", "an inlet temperature above the ambient "
                                                   + formatNumber(c.ambientC) + " degC (heated air)");
     c.fanPower = op.within("fan_power_kW", 0, 0, 1e4, "kW") * 1e3;
-    const YamlInput geo = in.child("geometry");
-    geo.rejectUnknown({"Wd", "He", "Hd", "plateThickness", "width", "depth"});
-    for (const char* k : kGeometry) g.geometry[k] = geo.within(k, 0, 100, "m");
     g.hasVelocity = op.has("superficial_velocity_m_per_s");
+    if (in.has("geometry") || g.hasVelocity || c.circulating)
+    {
+        // the statistics' bed is compared with it; u_s flows through width x depth
+        const YamlInput geo = in.child("geometry");
+        geo.rejectUnknown({"Wd", "He", "Hd", "plateThickness", "width", "depth"});
+        for (const char* k : kGeometry) g.geometry[k] = geo.within(k, 0, 100, "m");
+    }
     if (g.hasVelocity == op.has("air_mass_flow_kg_per_s"))
         throw op.error("superficial_velocity_m_per_s", "one of superficial_velocity_m_per_s and "
                                                        "air_mass_flow_kg_per_s");
@@ -238,7 +242,7 @@ void readOperation(const YamlInput& in, Case& c, CaseGeometry& g)
     {
         g.velocity = op.within("superficial_velocity_m_per_s", 1e-4, 100, "m/s");
         const double area = g.geometry["width"] * g.geometry["depth"];
-        if (!(area > 0)) throw geo.error("width", "a cross-section width x depth above 0");
+        if (!(area > 0)) throw in.child("geometry").error("width", "a cross-section width x depth above 0");
         c.airFlow = psy::density(c.inletC, c.inletW, c.pressure) * g.velocity * area / (1 + c.inletW);
     }
     else
@@ -335,14 +339,14 @@ Case readCase(const std::string& path)
     Case c;
     c.file = path;
     CaseGeometry g;
+    const std::string mode = in.text("circulation", "measured");
+    if (mode != "measured" && mode != "none") throw in.error("circulation", "measured or none");
+    c.circulating = mode == "measured";
     readOperation(in, c, g);
     readBed(in, c);
     c.dryingName = in.text("dryingModel");
     const spoutlab::Parameters modelProps = props(in, c.dryingName + "Props");
     c.drying = physics([&] { return spoutlab::DryingModel::New(c.dryingName, modelProps); });
-    const std::string mode = in.text("circulation", "measured");
-    if (mode != "measured" && mode != "none") throw in.error("circulation", "measured or none");
-    c.circulating = mode == "measured";
     const std::string gasModel = in.text("gasModel", "compartments");
     if (gasModel != "compartments" && gasModel != "inlet")
         throw in.error("gasModel", "compartments or inlet");
