@@ -140,6 +140,8 @@ public:
     GasField seen;
     double maxSegmentChange = 0;
     double lastEvaporation = 0;
+    // since the last output: time, and the outlet's W, enthalpy and the water evaporated times dt
+    double spanTime = 0, spanW = 0, spanH = 0, spanWater = 0;
     GasField booked;
     std::vector<double> ratePerKernel; // the last step's evaporation per kernel in each region [kg/s]
     std::vector<double> lastVapour;    // the vapour density the last step's particles saw [kg/m3]
@@ -360,6 +362,10 @@ void Bed::step(double dt)
     gasWater += G * (booked.outlet.W - c.inletW) * dt;
     gasEnergy += G * (booked.outletEnthalpy - inletEnthalpy()) * dt;
     lastEvaporation = std::accumulate(ex.water.begin(), ex.water.end(), 0.0) / dt;
+    spanTime += dt;
+    spanW += booked.outlet.W * dt;
+    spanH += booked.outletEnthalpy * dt;
+    spanWater += lastEvaporation * dt;
     if (!c.gasAtInlet)
         for (std::size_t r = 0; r < nr; ++r)
         {
@@ -383,7 +389,10 @@ double percentile(std::vector<double> v, double p)
     return v[k];
 }
 
-SeriesPoint point(const Bed& bed, double heaterJ, double dt)
+// The state at an output time; the outlet and the evaporation as means
+// over the time since the last output (a step's own outlet carries the
+// noise of the samples that crossed between regions in it).
+SeriesPoint point(Bed& bed, double heaterJ, double dt)
 {
     SeriesPoint p{};
     p.t = bed.t;
@@ -392,10 +401,13 @@ SeriesPoint point(const Bed& bed, double heaterJ, double dt)
     p.xP95 = percentile(bed.X, 0.95);
     p.tMeanC = std::accumulate(bed.T.begin(), bed.T.end(), 0.0) / static_cast<double>(bed.T.size()) - kKelvin;
     p.tMaxC = *std::max_element(bed.T.begin(), bed.T.end()) - kKelvin;
-    p.outletC = bed.booked.outlet.T - kKelvin;
-    p.outletW = bed.booked.outlet.W;
+    const double span = bed.spanTime;
+    p.outletW = span > 0 ? bed.spanW / span : bed.booked.outlet.W;
+    p.outletC =
+        span > 0 ? psy::temperatureFromEnthalpy(bed.spanH / span, p.outletW) : bed.booked.outlet.T - kKelvin;
     p.outletRH = psy::relativeHumidity(p.outletC, p.outletW, bed.c.pressure);
-    p.evaporation = bed.lastEvaporation;
+    p.evaporation = span > 0 ? bed.spanWater / span : 0.0;
+    bed.spanTime = bed.spanW = bed.spanH = bed.spanWater = 0;
     p.heaterJ = heaterJ;
     p.dt = dt;
     return p;
