@@ -72,7 +72,8 @@ void transferCoefficients(Case& c)
     const spoutlab::GasThermalProperties gas{c.gas.rho, c.gas.mu, c.gas.cp, c.gas.kappa};
     for (Region& r : c.regions)
     {
-        const auto model = spoutlab::HeatTransferModel::New(r.correlation, spoutlab::Parameters(r.name));
+        const auto model = spoutlab::HeatTransferModel::New(
+            r.correlation, spoutlab::Parameters(c.file + ": regions." + r.name));
         // the slip that gives the region's Re in the correlations' definition
         const double slip = r.slipReynolds * c.gas.mu / (r.voidage * c.gas.rho * c.diameter);
         const spoutlab::HeatTransferCell cell{{0, 0, 0}, r.voidage, c.diameter, slip};

@@ -117,9 +117,10 @@ struct TimeStepControl
 struct Case
 {
     std::string file;
-    std::string statistics;    // circulation.json ("" without circulation)
-    std::string statisticsRun; // its run.case
-    double cycleMean = 0;      // its cycle residence mean [s]
+    std::string statistics;                            // circulation.json ("" without circulation)
+    std::string statisticsRun;                         // its run.case
+    double cycleMean = 0;                              // its cycle residence mean [s]
+    double statisticsInletC = 0, statisticsInletW = 0; // the air of its run
     // operating point
     double inletC = 80, inletW = 0.01, pressure = 101325, ambientC = 20;
     double airFlow = 0;    // dry air [kg/s]

@@ -140,6 +140,13 @@ void printSummary(const Case& c, const Result& r, const BatchMetrics& m)
                        for (const auto& g : c.regions) s += g.residence.mean;
                        return s;
                    }());
+    if (!c.statistics.empty()
+        && (std::fabs(c.statisticsInletC - c.inletC) > 0.5
+            || std::fabs(c.statisticsInletW - c.inletW) > 1e-4))
+        fmt::print(
+            "note: the statistics' run had inlet air at {:.1f} degC, W {:.5f}: its measured h, k_m and gas "
+            "temperatures are of that air, the circulation is taken as it is\n",
+            c.statisticsInletC, c.statisticsInletW);
     fmt::print("{:<12}{:>14}{:>8}{:>9}{:>10}{:>9}{:>10}{:>10}{:>10}\n", "region", "correlation", "Re", "h",
                "h file", "dh %", "km", "km file", "holdup");
     for (std::size_t i = 0; i < c.regions.size(); ++i)

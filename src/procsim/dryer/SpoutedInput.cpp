@@ -1,5 +1,6 @@
 #include "dryer/SpoutedInput.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -118,6 +119,8 @@ void readStatistics(const std::string& file, Case& c, const CaseGeometry& g, con
         throw s.error("format", "'spoutlab-circulation 1' (a circulation.json of spoutFoam)");
     const YamlInput run = s.child("run");
     c.statisticsRun = run.text("case");
+    c.statisticsInletC = run.within("inletTemperature", 0, 2000, "K") - 273.15;
+    c.statisticsInletW = run.within("inletHumidityRatio", 0, 1);
     if (g.hasVelocity)
         same(run, "u_s", run.number("u_s", "m/s"), g.velocity, "superficial velocity [m/s]", c.file);
     else
@@ -193,7 +196,9 @@ void readRegions(const YamlInput& in, Case& c, const std::string& still)
         const YamlInput one = regs.child(r.name);
         one.rejectUnknown({"heatTransferModel", "slipRe", "voidage"});
         r.correlation = one.text("heatTransferModel");
-        const auto known = spoutlab::HeatTransferModel::available();
+        auto known = spoutlab::HeatTransferModel::available();
+        // a region rule picks a correlation by cell; here each region names its own
+        known.erase(std::remove(known.begin(), known.end(), "spoutDowncomer"), known.end());
         if (std::find(known.begin(), known.end(), r.correlation) == known.end())
             throw one.error(
                 "heatTransferModel", "one of " + [&] {
