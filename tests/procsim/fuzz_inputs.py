@@ -49,6 +49,8 @@ TARGETS = [
      ["dryer", "metrics", "{d}/table1_batches.csv", "--out", "{o}"]),
     ("dryer", ["plant.yaml"],
      ["dryer", "simulate", "{d}/plant.yaml", "--batch", "1", "--out", "{o}"]),
+    ("dryer", ["spouted.yaml", "spouted_circulation_synthetic.json"],
+     ["dryer", "spouted", "{d}/spouted.yaml", "--samples", "20", "--out", "{o}"]),
     ("plume", ["eulerian.yaml", "met_week.csv", "terrain.asc", "measured_24h.csv"],
      ["plume", "eulerian", "{d}/eulerian.yaml", "-o", "{o}", "--hours", "1"]),
     ("plume", ["gaussian.yaml", "met_gaussian.csv"],

@@ -11,5 +11,6 @@ int psychroCommand(int argc, char** argv);   // PsychroCommand.cpp
 int simulateCommand(int argc, char** argv);  // SimulateCommand.cpp
 int calibrateCommand(int argc, char** argv); // CalibrateCommand.cpp
 int whatifCommand(int argc, char** argv);    // WhatifCommand.cpp
+int spoutedCommand(int argc, char** argv);   // SpoutedCommand.cpp
 
 } // namespace procsim::dryer

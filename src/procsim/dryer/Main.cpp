@@ -16,7 +16,7 @@ int main(int argc, char** argv)
 {
     static const std::vector<Subcommand> commands = {
         {"metrics", metricsCommand},     {"psychro", psychroCommand}, {"simulate", simulateCommand},
-        {"calibrate", calibrateCommand}, {"whatif", whatifCommand},
+        {"calibrate", calibrateCommand}, {"whatif", whatifCommand},   {"spouted", spoutedCommand},
     };
     return runSubcommand("dryer", texts::help::dryer, commands, argc, argv);
 }

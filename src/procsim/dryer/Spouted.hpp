@@ -1,0 +1,189 @@
+#pragma once
+// The long-time spouted-bed drying predictor (`procsim dryer spouted`).
+//
+// The CFD-DEM reaches seconds, a batch of corn dries in tens of minutes. The
+// predictor carries N sample particles through the circulation the CFD-DEM
+// measured (circulation.json: per region a residence-time histogram and the
+// time-averaged slip Re, voidage, h, k_m, ...), each standing for N_bed / N
+// kernels of the bed, for hours. Every physical law is the physics core's
+// (coupling/): the drying model with its per-kernel state (DryingModel), the
+// heat-transfer correlation of each region for h and, through its Sherwood
+// form, k_m (HeatTransferModel), the moist air (MoistAir, Psychrometrics),
+// the corn's heat capacities. Nothing is re-derived here.
+//
+// Particles. A sample is in one region; when its residence there is over it
+// moves to the next region of the cycle (the file's `regions` order) with a
+// residence drawn from that region's histogram (a bin with probability
+// count/samples, uniform within the bin). At t = 0 the samples are placed as
+// the stationary circulation has them: region r with probability
+// mean_r / sum of means, the time left there the residual of a length-biased
+// draw (renewal theory), so the bed starts at its measured holdup. In a
+// region over a segment tau (a step cut at residence ends) the kernel is
+// advanced exactly as the CFD-DEM's coupling step advances it (the
+// singleKernel case's sequence): the drying model's advanceWithLatentHeat at
+// the kernel temperature T_p, then
+//   q = h A (T_g - T_p),  T_p += tau (q - dW/tau L) / (m_d (c_d + X c_w))
+// with X the moisture after the step (explicit in T_p, as LIGGGHTS').
+//
+// Gas. Its residence is milliseconds against the seconds of the particles'
+// changes: a quasi-steady compartment balance of water and energy along its
+// two paths, inlet -> spout -> fountain -> freeboard (spoutShare of the dry
+// air) and inlet -> entrainment -> downcomer (downcomerShare, the seepage),
+// mixed at the outlet. Each region is a well-mixed compartment: the gas the
+// particles there see is the gas leaving it, the gas entering plus what the
+// region's particles gave (water dW, energy sum(dW h_v(T_p)) - q tau) over the
+// dry-air flow of its path. Explicit like the CFD-DEM's exchange: a step's
+// particles see the compartments computed from the step before; the outlet
+// a step books carries exactly that step's exchange, so the balances close to
+// round-off. gasModel inlet holds every region at the inlet air (unlimited
+// air).
+//
+// Time step (adaptive): the step is raised (at most x2) or cut (at most /2)
+// towards the largest that keeps (1) the largest change of one kernel's
+// temperature over one segment below kernelTemperatureChange (the explicit
+// heat update and the drying model's held T_p) and (2) the change of the bed-
+// mean moisture per step below bedMoistureChange (the gas lags the particles
+// by one step), never above maxStep nor half the shortest heating time
+// m_d c_d/(h A) of a region (explicit stability). Steps land on output times.
+//
+// Balances: water, sum of m_d w X over samples lost = integral of G (W_out -
+// W_in) dt; energy, the change of the samples' enthalpy m_d w (c_d + X c_w) t
+// plus integral G (h_out - h_in) dt plus the heat of sorption sum dW (L -
+// h_fg(T_p)) (bound water's, which the kernel enthalpy does not hold) is zero.
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "DryingModel.hpp"
+#include "HeatTransferModel.hpp"
+
+namespace procsim::dryer::spouted
+{
+
+// A residence-time histogram: bin i covers [i w, (i + 1) w).
+struct Residence
+{
+    double binWidth = 0;
+    std::vector<double> counts;
+    long samples = 0;
+    double mean = 0; // as the file gives it [s]
+    double std = 0;
+
+    double histogramMean() const; // from the bins' midpoints [s]
+    // the running sums the draws search (after the counts are set)
+    void prepare();
+    // a residence from two uniform numbers in [0, 1) (prepared)
+    double draw(double u1, double u2) const;
+    // the time left of a residence in progress at a random instant
+    // (length-biased residence times a uniform fraction), three uniforms
+    double drawResidual(double u1, double u2, double u3) const;
+
+    std::vector<double> cumulative, lengthCumulative; // running sums of count_i and count_i (i + 1/2)
+};
+
+// One region of the bed as the predictor uses it.
+struct Region
+{
+    std::string name;
+    std::string correlation;       // the heat-transfer model's name
+    double slipReynolds = 0;       // Re = eps rho |Us - u| d / mu
+    double voidage = 1;            // eps
+    double h = 0;                  // [W/m2/K], from the correlation
+    double km = 0;                 // [m/s], its Sherwood form
+    double hFile = 0, kmFile = 0;  // the statistics' measured values (0: none)
+    double holdupShare = 0;        // the statistics' holdup / particles (0: none)
+    double gasTemperatureFile = 0; // [K] (0: none)
+    Residence residence;           // empty without circulation
+    int path = 0;                  // gas path: 0 spout, 1 seepage
+    int gasRank = 0;               // its place along the path (0 first)
+    bool measured = false;         // its conditions from the statistics
+};
+
+// Gas properties as constant/transportProperties has them.
+struct GasProperties
+{
+    double rho, mu, cp, kappa, Dv;
+};
+
+struct TimeStepControl
+{
+    double maxStep = 5;                   // [s]
+    double initialStep = 0.1;             // [s]
+    double kernelTemperatureChange = 1.0; // [K] per segment
+    double bedMoistureChange = 2e-3;      // [kg/kg d.b.] per step
+};
+
+struct Case
+{
+    std::string file;
+    std::string statistics;                            // circulation.json ("" without circulation)
+    std::string statisticsRun;                         // its run.case
+    double cycleMean = 0;                              // its cycle residence mean [s]
+    double statisticsInletC = 0, statisticsInletW = 0; // the air of its run
+    // operating point
+    double inletC = 80, inletW = 0.01, pressure = 101325, ambientC = 20;
+    double airFlow = 0;    // dry air [kg/s]
+    double fanPower = 0;   // [W]
+    double spoutShare = 1; // of the dry air; the rest seeps through entrainment and downcomer
+    // the bed
+    double bedParticles = 1, diameter = 8e-3, dryMass = 2.5e-4, initialX = 0.3333, initialC = 25;
+    double dryHeatCapacity = 1465;
+    GasProperties gas{};
+    std::shared_ptr<const spoutlab::DryingModel> drying;
+    std::string dryingName;
+    std::vector<Region> regions; // the cycle's order; one region: no circulation
+    bool circulating = true;
+    bool gasAtInlet = false; // gasModel inlet: unlimited air
+    // the batch
+    double targetX = 0.1765; // bed-mean moisture that ends it [kg/kg d.b.]
+    bool stopAtTarget = true;
+    double limitC = 60;         // kernel-temperature limit
+    double duration = 3600;     // longest batch [s]
+    double outputInterval = 60; // [s]
+    long samples = 10000;
+    std::uint64_t seed = 1;
+    TimeStepControl step;
+};
+
+// h and k_m of every region from its slip Re and voidage through its
+// correlation (the physics core's), at the case's gas and kernel diameter.
+void transferCoefficients(Case& c);
+
+struct SeriesPoint
+{
+    double t;                // [s]
+    double xMean, xP5, xP95; // over the samples [kg/kg d.b.]
+    double tMeanC, tMaxC;    // kernel temperatures
+    double outletC, outletW, outletRH;
+    double evaporation; // [kg/s], the bed
+    double heaterJ;     // cumulative
+    double dt;          // the last step
+};
+
+struct Result
+{
+    std::vector<SeriesPoint> series;
+    bool reachedTarget = false;
+    double targetTime = 0;           // interpolated in the step that reached it [s]
+    double endTime = 0;              // where the run stopped [s]
+    double timeAnyAbove = 0;         // time some sample was above the limit [s]
+    double meanTimeAbove = 0;        // per kernel [s]
+    double highestC = 0;             // hottest kernel temperature seen
+    double waterKg = 0;              // evaporated by the bed
+    double heaterJ = 0;              // heating the air from ambient, plus the fan
+    double dryMassKg = 0;            // of the bed
+    double finalX = 0, finalStd = 0; // bed-mean moisture and its spread over kernels
+    double waterBalanceRel = 0, energyBalanceRel = 0;
+    double sorptionJ = 0; // heat of sorption taken by the bound water
+    long steps = 0, segments = 0;
+    std::vector<double> holdup;      // time-averaged share of the samples per region
+    std::vector<double> moisture;    // final X of every sample
+    std::vector<double> temperature; // final T_p of every sample [K]
+};
+
+// Runs the batch. Deterministic: the same case (seed) gives the same result
+// to the bit.
+Result run(const Case& c);
+
+} // namespace procsim::dryer::spouted
