@@ -3,11 +3,9 @@ paper's quantities: u_ms and the hysteresis from the pressure-drop curve
 and the spout classifier's verdicts, the step schedule, Ergun's u_mf."""
 import math
 import os
-import sys
 import unittest
 
-sys.path.insert(0, os.path.join(os.environ.get('SPOUTLAB_DIR', '../..'), 'etc', 'python'))
-from spoutlab import spoutedbed  # noqa: E402
+from spoutlab import spoutedbed
 
 
 class KudraEq12(unittest.TestCase):

@@ -19,22 +19,19 @@ generate, inletVelocity), the spouted bed's protocols and the tests share.
                     the kernel diffusivity on it
   decomposition     x-slabs for parallel coupled runs
   cli               the argparse front ends of the scripts and protocols
-  protocols         the papers' protocols; openfoam_cases/spoutDraftPlates/
-                    protocols/<name> are their commands
+  vtkreaders        the runs' ParaView files through VTK's readers (needs
+                    VTK's Python, python3-vtk9; etc/paraview/particles.py
+                    and tests/view use it)
+  protocols         the papers' protocols, one command: python3 -m
+                    spoutlab.protocols NAME, which the spouted bed's
+                    protocols/NAME run
 
-Finding the package: every script puts <repository>/etc/python first on
-sys.path, the repository being $SPOUTLAB_DIR (etc/bashrc sets it; the case
-scripts source etc/caseFunctions, which sources it) or, without it, two
-levels above the working directory -- a case directory under
-openfoam_cases/:
-
-    sys.path.insert(0, os.path.join(os.environ.get('SPOUTLAB_DIR', '../..'),
-                                    'etc', 'python'))
-    from spoutlab import spoutedbed
-
-etc/bashrc also puts etc/python on PYTHONPATH, so that the modules with a
-command line run as /usr/bin/python3 -m spoutlab.mixing CASE (and
-spoutlab.decomposition, spoutlab.spoutregime).
+Finding the package: etc/bashrc puts <repository>/python on PYTHONPATH,
+once for everything (the Allrun scripts source it through
+etc/caseFunctions, ctest gives the tests the same); scripts import it
+plainly, and a case script run without it stops with one line saying what
+to source.  python/pyproject.toml makes it installable as well, offline
+with Debian's setuptools; the case layer needs etc/bashrc all the same.
 
 Standard library only, except bedlayers, packedbedheat, moistair,
 kerneldrying, packedbeddrying and thinlayer's fits (numpy, scipy: Debian's
