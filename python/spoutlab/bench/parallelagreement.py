@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 """parallelAgreement: is a run on P ranks the same physics as a serial one, over seconds?
 
 A benchmark-style check, not a test (each run is minutes of the full bed).
@@ -34,8 +33,7 @@ import re
 import shutil
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import spoutbench  # noqa: E402
+from spoutlab.bench import spoutbench
 
 
 def case_run(base, name, options, settled=None):
@@ -91,7 +89,7 @@ def standard_error(summary, window, block=0.3):
     return math.sqrt(sum((x - m) ** 2 for x in means) / (len(means) - 1) / len(means))
 
 
-def main():
+def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.split('\n\n')[0])
     parser.add_argument('--particles', type=int, default=26000)
     parser.add_argument('--velocity', type=float, default=2.0, help='u_s [m/s]')
@@ -102,7 +100,7 @@ def main():
                         metavar=('A', 'B'), help='insertion seeds (primes above 10000)')
     parser.add_argument('--ranks', type=int, default=2)
     parser.add_argument('--dir', default=spoutbench.default_dir('agreement'))
-    args = parser.parse_args()
+    args = parser.parse_args(argv)
     os.makedirs(args.dir, exist_ok=True)
 
     def options(seed, ranks):

@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 """parallelSpeedup: the draft-plate spouted bed serial and on P ranks, side by side.
 
 A benchmark, not a test: it prints figures and asserts nothing about speed.
@@ -26,8 +25,7 @@ import os
 import re
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import spoutbench  # noqa: E402
+from spoutlab.bench import spoutbench
 
 
 def figures(log, n, dem_per_cfd):
@@ -61,7 +59,7 @@ def table(args, what, results):
     print(flush=True)
 
 
-def main():
+def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.split('\n\n')[0])
     parser.add_argument('--particles', type=int, default=26000)
     parser.add_argument('--time', type=float, default=0.3, help='simulated seconds')
@@ -70,7 +68,7 @@ def main():
                         help='simulated seconds of spouting before the second window '
                              '(0: the settled bed only; default %(default)s)')
     parser.add_argument('--dir', default=spoutbench.default_dir('parallel'))
-    args = parser.parse_args()
+    args = parser.parse_args(argv)
     if 1 not in args.ranks:
         args.ranks = [1] + args.ranks
     os.makedirs(args.dir, exist_ok=True)

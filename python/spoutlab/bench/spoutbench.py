@@ -7,7 +7,9 @@ import shutil
 import subprocess
 import sys
 
-REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+from spoutlab import bench
+
+REPO = bench.REPO
 CASE = os.path.join(REPO, 'openfoam_cases', 'spoutDraftPlates')
 
 

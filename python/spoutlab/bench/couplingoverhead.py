@@ -1,4 +1,3 @@
-#!/usr/bin/env python3
 """couplingOverhead: what the CFD-DEM coupling costs on top of LIGGGHTS alone.
 
 A benchmark, not a test: it prints figures and asserts nothing about speed.
@@ -36,7 +35,9 @@ import subprocess
 import sys
 import time
 
-REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+from spoutlab import bench
+
+REPO = bench.REPO
 CASE = os.path.join(REPO, 'openfoam_cases', 'minFluidisation')
 INPUTS = os.path.join(REPO, 'liggghts_inputs', 'fluidisedColumn')
 TOP_UP = os.path.join(REPO, 'bench', 'in.topUp')

@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 """neighbourSettings: LIGGGHTS' neighbour skin and bin size on the spouting full bed.
 
 A benchmark, not a test.  LIGGGHTS rebuilds its neighbour lists whenever a
@@ -33,10 +32,8 @@ import os
 import re
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import spoutbench  # noqa: E402
-sys.path.insert(0, os.path.join(spoutbench.REPO, 'python'))
-from spoutlab import casefiles  # noqa: E402
+from spoutlab import casefiles
+from spoutlab.bench import spoutbench
 
 
 def liggghts_loop(case):
@@ -66,7 +63,7 @@ def geometry(case):
     return value('dp'), value('dt')
 
 
-def main():
+def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.split('\n\n')[0])
     parser.add_argument('--particles', type=int, default=26000)
     parser.add_argument('--develop', type=float, default=1.5,
@@ -77,7 +74,7 @@ def main():
     parser.add_argument('--bins', type=float, nargs='+', default=[0.5, 1.0],
                         help='bin size / neighbour cutoff')
     parser.add_argument('--dir', default=spoutbench.default_dir('parallel'))
-    args = parser.parse_args()
+    args = parser.parse_args(argv)
     os.makedirs(args.dir, exist_ok=True)
     settled = spoutbench.settled_bed(args.dir, args.particles)
     source = spoutbench.developed(settled, args.dir, args.develop)

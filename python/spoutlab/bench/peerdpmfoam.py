@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 """peerDPMFoam: spoutFoam (OpenFOAM gas + LIGGGHTS) against OpenFOAM's own
 CFD-DEM solver DPMFoam (its colliding cloud, pairCollision with
 pairSpringSliderDashpot / wallSpringSliderDashpot) on the same two cases.
@@ -26,8 +25,6 @@ See bench/README.md, "peerDPMFoam".
 Needs numpy (/usr/bin/python3).
 """
 import argparse
-import importlib.machinery
-import importlib.util
 import math
 import os
 import re
@@ -38,7 +35,10 @@ import time
 
 import numpy as np
 
-REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+from spoutlab import bedlayers, bench, draglaws
+from spoutlab.bench import couplingoverhead as co  # the environment, process and settling helpers
+
+REPO = bench.REPO
 INPUTS = os.path.join(REPO, 'liggghts_inputs', 'fluidisedColumn')
 CASES = {'packed': os.path.join(REPO, 'openfoam_cases', 'packedBed'),
          'fluidised': os.path.join(REPO, 'openfoam_cases', 'minFluidisation')}
@@ -46,21 +46,7 @@ DPM_TEMPLATE = os.path.join(REPO, 'bench', 'dpmColumn')
 G = 9.81
 
 
-def _load_couplingOverhead():
-    """The environment, process and settling helpers of bench/couplingOverhead."""
-    path = os.path.join(REPO, 'bench', 'couplingOverhead')
-    loader = importlib.machinery.SourceFileLoader('couplingOverhead', path)
-    spec = importlib.util.spec_from_loader('couplingOverhead', loader)
-    module = importlib.util.module_from_spec(spec)
-    loader.exec_module(module)
-    return module
-
-
-co = _load_couplingOverhead()
 BenchError = co.BenchError
-sys.path.insert(0, os.path.join(REPO, 'python'))
-from spoutlab import bedlayers  # noqa: E402
-from spoutlab import draglaws  # noqa: E402
 
 
 # ----------------------------------------------------------------- parameters

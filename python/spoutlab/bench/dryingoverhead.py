@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 """dryingOverhead: what drying adds to a coupled step of the hot spouted bed.
 
 A benchmark, not a test: it prints figures and asserts nothing about speed.
@@ -28,8 +27,7 @@ import re
 import shutil
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import spoutbench  # noqa: E402
+from spoutlab.bench import spoutbench
 
 
 def settled_bed(base, n):

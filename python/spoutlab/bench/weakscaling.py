@@ -22,26 +22,15 @@ counted.
 Python 3 standard library only; uses bench/couplingOverhead's functions.
 """
 import argparse
-import importlib.machinery
-import importlib.util
 import os
 import re
 import shutil
 import sys
 
-HERE = os.path.dirname(os.path.abspath(__file__))
+from spoutlab import bench
+from spoutlab.bench import couplingoverhead as co
 
-
-def load_overhead():
-    path = os.path.join(HERE, 'couplingOverhead')
-    loader = importlib.machinery.SourceFileLoader('couplingOverhead', path)
-    module = importlib.util.module_from_spec(importlib.util.spec_from_loader(
-        'couplingOverhead', loader))
-    loader.exec_module(module)
-    return module
-
-
-co = load_overhead()
+HERE = os.path.join(bench.REPO, 'bench')   # its LIGGGHTS inputs
 POSITIONS = os.path.join(HERE, 'in.positions')
 WIDEN = os.path.join(HERE, 'in.widen')
 
