@@ -25,6 +25,8 @@ generate, inletVelocity), the spouted bed's protocols and the tests share.
   protocols         the papers' protocols, one command: python3 -m
                     spoutlab.protocols NAME, which the spouted bed's
                     protocols/NAME run
+  bench             the benchmarks of bench/ (figures, no assertions):
+                    python3 -m spoutlab.bench NAME, which bench/NAME runs
 
 Finding the package: etc/bashrc puts <repository>/python on PYTHONPATH,
 once for everything (the Allrun scripts source it through
