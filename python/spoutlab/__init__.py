@@ -6,8 +6,13 @@ generate, inletVelocity), the spouted bed's protocols and the tests share.
   casefiles         what a run writes besides them: function-object .dat
                     files, coupling.csv, the particle .vtp files; gnuplot
                     pictures and the checks table of the evaluate scripts
-  spoutedbed        the slanted-base vessel of spoutDraftPlates and the
-                    protocols' rules (u_ms, the schedule, the settled bed)
+  spoutedbed        the slanted-base vessel of spoutDraftPlates (and the
+                    settled bed's height and voidage)
+  bedmaps           pictures of the vessel: particles, gas cell fields
+  spoutingloop      the minimum-spouting protocol's rules and schedule
+  spoutcorrelations Kudra's u_ms (eq 12), Ergun's u_mf
+  profilefeatures   the features of Figs 4-5 in the time-averaged profiles
+  caserun           running the case from a protocol; what a run used
   spoutregime       the spout classifier
   mixing            the degree of mixing (eqs 17-19, Lacey)
   spoutheat         the heat-transfer post-processing of the spouted bed

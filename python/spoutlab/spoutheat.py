@@ -19,7 +19,7 @@ import os
 from spoutlab import heatcorrelations as hc
 from spoutlab import casefiles as sc
 from spoutlab import foamfile
-from spoutlab import spoutedbed
+from spoutlab import bedmaps
 
 BAND = (16.927, 22.454)   # z/R_d of Fig 12
 
@@ -191,12 +191,12 @@ def snapshots(g, names, case='.'):
     for name in names:
         if name in vtps:
             png = 'particleTemperature_%s.png' % name
-            spoutedbed.snapshot(g, vtps[name], png, 'particles, t = %s s' % name,
+            bedmaps.snapshot(g, vtps[name], png, 'particles, t = %s s' % name,
                                 field='temperature', vmin=g.T0, vmax=math.ceil(hottest),
                                 label='particle temperature [K]')
             pictures.append(png)
         png = 'gasTemperature_%s.png' % name
-        spoutedbed.field_map(g, centres, foamfile.read_field(os.path.join(case, name, 'T')), png,
+        bedmaps.field_map(g, centres, foamfile.read_field(os.path.join(case, name, 'T')), png,
                              'gas, t = %s s' % name, 'gas temperature [K]', g.T0, g.Tin)
         pictures.append(png)
     return pictures

@@ -44,6 +44,8 @@ when it is also rising and has a fountain; the share of those is reported
 beside the verdict."""
 import math
 
+from spoutlab import spoutedbed
+
 SURFACE_LAYER = 0.019
 SURFACE_FRACTION = 0.25
 CORE_LAYER = 0.038
@@ -231,6 +233,31 @@ def classify_case(g, case='.', start=0.0, region=None):
     return Verdict(snapshots)
 
 
+# write times drift from their nominal values by a time step or so (0.0999,
+# 0.2001 for 0.1, 0.2 with 0.3 ms steps): a particle file this close to a
+# window's end belongs to the window
+WINDOW_SLACK = 1e-3
+
+
+def bed_spouts(g, case, t0, t1):
+    """Whether the bed spouts between t0 and t1 [s]: the spout classifier
+    (open dilute core through the bed, upward
+    flux in it, a fountain, persistent over the particle files written in
+    the window), with its default spout region for the vessel.  The one
+    place the protocols ask; returns the classifier's Verdict (.spouts,
+    .describe())."""
+    from spoutlab import mixing
+    from spoutlab import casefiles as sc
+    region = SpoutRegion.of(g)
+    snapshots = []
+    for t, path in mixing.particle_files(case):
+        if t0 - WINDOW_SLACK <= t <= t1 + WINDOW_SLACK:
+            vz = sc.read_vtp_array(path, 'velocity')[2::3]
+            snapshots.append(measure(g, region, sc.read_vtp_points(path), vz,
+                                                 sc.read_vtp_array(path, 'radius'), t))
+    return Verdict(snapshots)
+
+
 def write_csv(verdict, path):
     with open(path, 'w') as f:
         f.write('time [s],bed surface [m],annulus solid fraction,densest core layer / annulus,'
@@ -281,7 +308,6 @@ def region_from_text(text, g, what):
 if __name__ == '__main__':
     # stand-alone use: python3 -m spoutlab.spoutregime [CASE]
     from spoutlab import cli
-    from spoutlab import spoutedbed
     p = cli.Parser(prog='spoutregime', description='Whether the bed of a '
                                 'spouted-bed case spouts: the classifier over all its '
                                 'particle files.')

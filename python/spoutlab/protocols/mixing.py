@@ -31,6 +31,7 @@ from spoutlab import casefiles as sc
 from spoutlab import cli
 from spoutlab import mixing
 from spoutlab import spoutedbed
+from spoutlab import bedmaps
 from spoutlab.protocols import circulation
 
 # draft-plate paper Fig 10a/b and no-draft paper Fig 6 (26 000 at 2.0 m/s),
@@ -127,9 +128,9 @@ class Run:
                     'no draft plates' if self.vessel == 'no-plates' else 'draft plates', self.n,
                     self.u, t)
                 if field == 'velocity':
-                    spoutedbed.snapshot(g, vtp, name, title)
+                    bedmaps.snapshot(g, vtp, name, title)
                 else:
-                    spoutedbed.snapshot(g, vtp, name, title, field='label_left-right', vmin=0,
+                    bedmaps.snapshot(g, vtp, name, title, field='label_left-right', vmin=0,
                                         vmax=1, label='label: A (1, left at t = 0), B (0)')
         return names
 

@@ -17,7 +17,7 @@ import shutil
 import sys
 
 from spoutlab import cli
-from spoutlab import spoutedbed
+from spoutlab import profilefeatures
 from spoutlab.protocols import circulation as circ
 
 
@@ -43,15 +43,15 @@ def main(argv):
         work = circ.run_point(o, label, u, ['He=%g' % He], settled)
         for name in ('spoutVelocity', 'spoutVoidage', 'downcomerVelocity'):
             shutil.copy(os.path.join(work, name + '.png'), 'profiles_u%g_%s.png' % (u, name))
-        spout = spoutedbed.read_profile(os.path.join(work, 'spoutProfiles.csv'))
-        down = spoutedbed.read_profile(os.path.join(work, 'downcomerProfiles.csv'))
+        spout = profilefeatures.read_profile(os.path.join(work, 'spoutProfiles.csv'))
+        down = profilefeatures.read_profile(os.path.join(work, 'downcomerProfiles.csv'))
         lines.append('')
         lines.append('u_s = %g m/s (%s):' % (u, work))
-        for name, low, high, holds in spoutedbed.profile_features(spout, down):
+        for name, low, high, holds in profilefeatures.profile_features(spout, down):
             lines.append('  %-58s lower %.3f m/s, upper %.3f m/s: %s'
                          % (name, low, high, 'yes' if holds else 'NO'))
         # where the spout stops accelerating, and how much it slows above
-        series = spoutedbed.by_height(spout)
+        series = profilefeatures.by_height(spout)
         top = max(series, key=lambda hv: hv[1])
         lines.append('  spout velocity by height (z/R_d: m/s)  '
                      + ', '.join('%.1f: %.2f' % hv for hv in series))

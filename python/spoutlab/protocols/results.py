@@ -19,7 +19,7 @@ import shutil
 import sys
 
 from spoutlab import cli
-from spoutlab import spoutedbed
+from spoutlab import profilefeatures
 from spoutlab.protocols import mixing as mixing_protocol
 
 
@@ -354,7 +354,7 @@ def spout_height_rows(case, u_ms):
         if not (label.startswith('He95_u') or label.startswith('mu0.3_u')) \
                 or not os.path.isfile(path):
             continue
-        series = spoutedbed.by_height(spoutedbed.read_profile(path))
+        series = profilefeatures.by_height(profilefeatures.read_profile(path))
         u = label.split('_u')[1]
         (z_top, v_top), (z_end, v_end) = max(series, key=lambda hv: hv[1]), series[-1]
         rows.append(('spout velocity along the height, %s' % label,
@@ -422,7 +422,7 @@ def circulation_rows(case, study):
                 mus.append(float(label[2:label.index('_')]))
                 logs.append(math.log10(ws))
         if len(mus) > 1:
-            slope = spoutedbed.slope(mus, logs)
+            slope = profilefeatures.slope(mus, logs)
             rows.append(('d log10 W_s / d mu', '%.2f' % slope, '-3.25 (eq 16)',
                          'least squares over the friction runs', ''))
     return rows, points, slope

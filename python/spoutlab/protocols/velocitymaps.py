@@ -24,6 +24,8 @@ from spoutlab import cli
 
 from spoutlab import foamfile
 from spoutlab import spoutedbed
+from spoutlab import bedmaps
+from spoutlab import profilefeatures
 from spoutlab.protocols import circulation as circ
 
 # a cell holds particles in the time average when its mean solid fraction
@@ -115,7 +117,7 @@ def features(f):
         axis.append(mean([f.Vz[i] for i in row if abs(c[i][0]) * 1000 <= g.Wi / 2]))
         off.append(mean([f.Vz[i] for i in row if abs(c[i][0]) * 1000 > g.Wi / 2]))
         edge.append(mean([f.Vz[i] for i in (row[0], row[-1])]))
-    falls = len(heights) > 1 and spoutedbed.slope(heights, axis) < 0
+    falls = len(heights) > 1 and profilefeatures.slope(heights, axis) < 0
     out.append(('V_z on the axis falls with height', ', '.join(
         '%.0f mm: %.2f' % hv for hv in zip(heights, axis)) + ' m/s', falls))
     out.append(('V_z falls with the distance from the axis', 'axis %s against the rest %s m/s'
@@ -132,11 +134,11 @@ def draw(f, label, title):
     """The two maps and the profiles of one run."""
     g = f.g
     umax = max(abs(v) for v in f.Uz)
-    spoutedbed.field_map(g, f.centres, f.Uz, 'maps_%s_gasVelocity.png' % label,
+    bedmaps.field_map(g, f.centres, f.Uz, 'maps_%s_gasVelocity.png' % label,
                          'Time-averaged gas velocity U_z, %s (Fig 3)' % title,
                          'U_z [m/s]', -umax, umax, zmax=2 * f.bed)
     shown = [(c, v) for c, v in zip(f.centres, f.Vz) if not math.isnan(v)]
-    spoutedbed.field_map(g, [c for c, _ in shown], [v for _, v in shown],
+    bedmaps.field_map(g, [c for c, _ in shown], [v for _, v in shown],
                          'maps_%s_particleVelocity.png' % label,
                          'Time-averaged particle velocity V_z, %s (Fig 4)' % title,
                          'V_z [m/s]', -0.5, 0.5, zmax=2 * f.bed)
