@@ -24,8 +24,11 @@ Restart: run the same command again after an interruption; spoutFoam
 continues from the last written time (LIGGGHTS restarts are in DEM/) and
 the finished steps decide the same schedule again.  Progress is printed
 every few seconds and a line per finished step.
-Results: ums.csv, ums.png, ums.txt, snapshot_<branch>_u<u>.png.
+Results: ums.csv, ums.png, ums.txt, snapshot_<branch>_u<u>.png, and ums.json, the
+report's numbers as it prints them (read by protocols/results).
 """
+import json
+import math
 import os
 import subprocess
 import sys
@@ -177,6 +180,11 @@ def branch(done, name):
     return [(s.u, s.dp, s.spouts) for s in done if s.branch == name]
 
 
+def reported(fmt, value):
+    """value as the report prints it (fmt), as a number."""
+    return float(fmt % value)
+
+
 def report(o, done, g):
     n = int(g.particles['nParticles'])
     Hb, eps = spoutedbed.settled_bed(g, 'particles/particles_0.vtp')
@@ -207,9 +215,17 @@ def report(o, done, g):
                                                    'yes' if s.spouts else 'no',
                                                    s.verdict.describe()) for s in shown]
     lines.append('')
+    # the numbers of the report as it prints them, for protocols/results (ums.json)
+    numbers = {'particles': n, 'bed_height_m': reported('%.3f', Hb), 'plates': g.plates,
+               'settings': '; '.join(lines[:2]),
+               'cores': [[reported('%.3f', s.u), s.branch, reported('%.2f', s.verdict.core_ratio)]
+                         for s in shown if s.verdict.snapshots
+                         and not math.isnan(s.verdict.core_ratio)]}
     ref = ' (paper: %g m/s, %.2f kPa)' % paper if paper else ''
     if packed:
         u_peak, dp_peak, u_b, dp_b = spoutingloop.break_through(packed)
+        numbers['peak'] = {'dP_Pa': reported('%.0f', dp_peak), 'u_m_s': reported('%.3f', u_peak)}
+        numbers['break_through_m_s'] = None if u_b is None else reported('%.3f', u_b)
         if u_b is None:
             lines.append('the bed does not spout at any u_s up to %.3f m/s (highest tried); '
                          'peak dP %.0f Pa at %.3f m/s' % (packed[-1][0], dp_peak, u_peak))
@@ -225,26 +241,35 @@ def report(o, done, g):
         down = packed[-1:] + down
     ms = spoutingloop.minimum_spouting(down)
     if ms:
+        numbers['u_ms'] = {'u_m_s': reported('%.3f', ms[0]), 'dP_Pa': reported('%.0f', ms[1]),
+                           'bound': False}
         lines.append('u_ms = %.3f m/s, dP_ms = %.0f Pa%s: at the next cut the bed stops '
                      'spouting, dP %.0f Pa (%+.0f %%)'
                      % (ms[0], ms[1], ref, ms[2], 100 * (ms[2] / ms[1] - 1)))
     elif down and down[-1][2]:
+        numbers['u_ms'] = {'u_m_s': reported('%.3f', down[-1][0]),
+                           'dP_Pa': reported('%.0f', down[-1][1]), 'bound': True}
         lines.append('u_ms <= %.3f m/s, dP_ms = %.0f Pa%s: the bed still spouted at the '
                      'lowest step: lower --stop' % (down[-1][0], down[-1][1], ref))
     elif down:
         lines.append('no u_ms: the bed did not spout on the decreasing branch')
     rise = spoutingloop.steepest_rise(down)
     if rise:
+        numbers['u_ms_by_dP'] = {'u_m_s': reported('%.3f', rise[0]),
+                                 'dP_Pa': reported('%.0f', rise[1])}
         lines.append('u_ms by dP alone = %.3f m/s, dP_ms = %.0f Pa%s: the step before dP\'s '
                      'steepest rise on the decreasing branch, to %.0f Pa one step below'
                      % (rise[0], rise[1], ref, rise[2]))
     if loop is not None:
+        numbers['hysteresis_Pa'] = reported('%.0f', loop)
         lines.append('hysteresis = %.0f Pa: the increasing branch\'s peak dP minus the '
                      'decreasing branch\'s dP at %.3f m/s'
                      % (loop, spoutingloop.break_through(packed)[0]))
     back = spoutingloop.spout_reforms(up)
     if back:
         above = ms is not None and back[0] > ms[0] + 1e-6
+        numbers['reforms'] = {'u_m_s': reported('%.3f', back[0]),
+                              'dP_Pa': reported('%.0f', back[1])}
         lines.append('increasing u_s again: the bed spouts again at %.3f m/s, dP %.0f Pa '
                      '(%s)' % (back + ('above u_ms: a hysteresis in u_s' if above
                                        else 'not above u_ms: no hysteresis in u_s',)))
@@ -253,11 +278,17 @@ def report(o, done, g):
                      % up[-1][0])
     rho = g.gas['rho']
     p = g.particles
+    umf = spoutcorrelations.ergun_umf(p['dp'] / 1000, p['rhop'], rho, g.gas['mu'])
+    umf_eps = spoutcorrelations.ergun_umf(p['dp'] / 1000, p['rhop'], rho, g.gas['mu'], eps)
+    numbers['u_mf_ergun_m_s'] = reported('%.3f', umf)
+    numbers['u_mf_settled'] = {'voidage': reported('%.3f', eps),
+                               'u_m_s': reported('%.3f', umf_eps)}
     lines.append("Ergun's u_mf: %.3f m/s in Wen and Yu's form (the no-draft paper: 1.746 m/s); "
                  "%.3f m/s at the settled bed's voidage %.3f"
-                 % (spoutcorrelations.ergun_umf(p['dp'] / 1000, p['rhop'], rho, g.gas['mu']),
-                    spoutcorrelations.ergun_umf(p['dp'] / 1000, p['rhop'], rho, g.gas['mu'], eps), eps))
+                 % (umf, umf_eps, eps))
     if g.plates:
+        numbers['kudra_m_s'] = {'scaled': reported('%.3f', spoutcorrelations.kudra_ums(g, Hb)),
+                                'direct': reported('%.3f', spoutcorrelations.kudra_eq12(g, Hb))}
         lines.append("Kudra's eq 12 scaled to this geometry and bed height: %.3f m/s; evaluated "
                      "directly: %.3f m/s (eq 13 as the paper evaluates it: 1.20 kPa)"
                      % (spoutcorrelations.kudra_ums(g, Hb), spoutcorrelations.kudra_eq12(g, Hb)))
@@ -266,6 +297,9 @@ def report(o, done, g):
     text = '\n'.join(lines) + '\n'
     sys.stdout.write(text)
     open('ums.txt', 'w').write(text)
+    with open('ums.json', 'w') as f:
+        json.dump(numbers, f, indent=1)
+        f.write('\n')
     mark = (',\\\n     "<echo %g,%g" using 1:2 with points pt 9 ps 2 title "paper: u_{ms}, dP_{ms}"'
             % paper) if paper else ''
     sc.plot('ums.png', '''

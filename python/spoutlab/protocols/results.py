@@ -12,6 +12,7 @@ sections whose runs it is given and keeps the others (likewise the rows of
 results.csv, by section).
 """
 import csv
+import json
 import os
 import math
 import re
@@ -21,6 +22,20 @@ import sys
 from spoutlab import cli
 from spoutlab import profilefeatures
 from spoutlab.protocols import mixing as mixing_protocol
+
+
+def read_json(case, name, protocol):
+    """A protocol's numbers, NAME in the case copy it ran in; one line if
+    they are not there (a run from before the protocols wrote them: its
+    --report writes them again from the finished steps)."""
+    path = os.path.join(case, name)
+    try:
+        with open(path) as f:
+            return json.load(f)
+    except (OSError, ValueError) as e:
+        sys.exit('results: %s: %s (protocols/%s --report in that case writes it from its '
+                 'finished steps)' % (path, e.strerror if isinstance(e, OSError) else
+                                      'not JSON: %s' % e, protocol))
 
 
 def wall_time(case):
@@ -44,47 +59,39 @@ def wall_time(case):
 
 
 class UmsRun:
-    """What protocols/minimumSpouting wrote in a case (ums.txt, ums.csv)."""
+    """What protocols/minimumSpouting wrote in a case: its numbers (ums.json)
+    and its steps (ums.csv)."""
 
     def __init__(self, case):
         self.case = case
-        text = open(os.path.join(case, 'ums.txt')).read()
-        head = re.match(r'minimum spouting velocity protocol \((\d+) particles, settled bed '
-                        r'([\d.]+) m(?:, (no draft plates|draft plates))?\)', text)
-        self.particles, self.bed = int(head.group(1)), float(head.group(2))
-        self.plates = head.group(3) != 'no draft plates'
-        self.settings = '; '.join(text.splitlines()[:2])
+        r = read_json(case, 'ums.json', 'minimumSpouting')
+        self.particles, self.bed, self.plates = r['particles'], r['bed_height_m'], r['plates']
+        self.settings = r['settings']
         self.hours = wall_time(case) / 3600
         rows = [r.strip().split(',') for r in list(open(os.path.join(case, 'ums.csv')))[1:]]
         self.steps = [(float(r[0]), r[1], float(r[2]), r[4] == '1' if len(r) > 4 else None)
                       for r in rows]
         self.max_u = max(u for u, b, _, _ in self.steps if b != 'spinup')
-        # the classifier's window-mean core per step, from the table
-        self.cores = [(float(m.group(1)), m.group(2), float(m.group(3)))
-                      for m in re.finditer(r'^ +([\d.]+) +(\w+) +-?\d+ +\S+ +(?:yes|no) +.*?'
-                                           r'core ([\d.]+|inf) of the annulus', text, re.M)]
+        # the classifier's window-mean core per step
+        self.cores = [tuple(c) for c in r['cores']]
         self.spouts = any(s for _, b, _, s in self.steps if b != 'spinup')
-
-        def number(pattern, group=1):
-            m = re.search(pattern, text)
-            return float(m.group(group)) if m else None
-        m = re.search(r'u_ms (=|<=) ([\d.]+) m/s, dP_ms = ([\d.]+) Pa', text)
-        self.u_ms_bound = m.group(1) == '<=' if m else None
-        self.u_ms = float(m.group(2)) if m else None
-        self.dp_ms = float(m.group(3)) if m else None
-        m = re.search(r'u_ms by dP alone = ([\d.]+) m/s, dP_ms = ([\d.]+) Pa', text)
-        self.rise = (float(m.group(1)), float(m.group(2))) if m else None
-        self.peak = (number(r'dP peaks at (\d+) Pa'), number(r'dP peaks at \d+ Pa at ([\d.]+)'))
-        if self.peak[0] is None:
-            self.peak = (number(r'peak dP (\d+) Pa'), number(r'peak dP \d+ Pa at ([\d.]+)'))
-        self.break_through = number(r'breaks through at ([\d.]+) m/s')
-        self.hysteresis = number(r'hysteresis = (-?\d+) Pa')
-        self.reforms = re.search(r'spouts again at ([\d.]+) m/s, dP (\d+) Pa', text)
-        self.umf = number(r"Ergun's u_mf: ([\d.]+) m/s")
-        self.umf_eps = (number(r"m/s at the settled bed's voidage ([\d.]+)"),
-                        number(r"; ([\d.]+) m/s at the settled bed's voidage"))
-        self.kudra = number(r"eq 12 scaled to this geometry and bed height: ([\d.]+)")
-        self.kudra_direct = number(r"evaluated directly: ([\d.]+)")
+        ms = r.get('u_ms')
+        self.u_ms_bound = ms['bound'] if ms else None
+        self.u_ms = ms['u_m_s'] if ms else None
+        self.dp_ms = ms['dP_Pa'] if ms else None
+        rise = r.get('u_ms_by_dP')
+        self.rise = (rise['u_m_s'], rise['dP_Pa']) if rise else None
+        peak = r.get('peak')
+        self.peak = (peak['dP_Pa'], peak['u_m_s']) if peak else (None, None)
+        self.break_through = r.get('break_through_m_s')
+        self.hysteresis = r.get('hysteresis_Pa')
+        back = r.get('reforms')
+        self.reforms = (back['u_m_s'], back['dP_Pa']) if back else None
+        self.umf = r['u_mf_ergun_m_s']
+        self.umf_eps = (r['u_mf_settled']['voidage'], r['u_mf_settled']['u_m_s'])
+        kudra = r.get('kudra_m_s')
+        self.kudra = kudra['scaled'] if kudra else None
+        self.kudra_direct = kudra['direct'] if kudra else None
 
     def row(self, quantity, value, paper):
         return (quantity, value, paper, self.settings, '%.2f h' % self.hours)
@@ -104,8 +111,8 @@ class UmsRun:
                                  '%.2f kPa' % (self.hysteresis / 1000),
                                  'a loop (Fig 2; its size is not given)'))
         if self.reforms:
-            rows.append(self.row('spout re-forms on rising again', '%s m/s (dP %.2f kPa)'
-                                 % (self.reforms.group(1), float(self.reforms.group(2)) / 1000),
+            rows.append(self.row('spout re-forms on rising again', '%.3f m/s (dP %.2f kPa)'
+                                 % (self.reforms[0], self.reforms[1] / 1000),
                                  'above u_ms (hysteresis loop, Fig 2)'))
         return rows
 
@@ -373,10 +380,10 @@ def fig3_velocities(ums):
     decreasing branch, u_ms and the step that collapsed the spout."""
     down = [float(r.split(',')[0]) for r in list(open(os.path.join(ums, 'ums.csv')))[1:]
             if r.split(',')[1] == 'down']
-    m = re.search(r'u_ms = ([\d.]+) m/s', open(os.path.join(ums, 'ums.txt')).read())
+    r = UmsRun(ums)
     picked = {down[0], down[-1]}
-    if m:
-        k = min(range(len(down)), key=lambda i: abs(down[i] - float(m.group(1))))
+    if r.u_ms is not None and not r.u_ms_bound:
+        k = min(range(len(down)), key=lambda i: abs(down[i] - r.u_ms))
         picked.update(down[k:k + 2])
     return sorted(picked, reverse=True)
 
@@ -475,8 +482,7 @@ def heat_section(case):
 def drying_section(case):
     """The dryer from protocols/drying's drying.json: the single-kernel checks
     and the bed."""
-    import json
-    r = json.load(open(os.path.join(case, 'drying.json')))
+    r = read_json(case, 'drying.json', 'drying')
     k, b = r.get('kernel', {}), r.get('bed')
     rows, keys = [], []
     if 'wetBulb' in k:
@@ -586,13 +592,13 @@ def build(ums, circ, heat, figure_dir, noplates=(), maps=None, mixing=(), drying
 
     if ums:
         rows, u_ms = ums_rows(ums)
-        m = re.search(r'dP_ms = ([\d.]+) Pa', open(os.path.join(ums, 'ums.txt')).read())
+        run = UmsRun(ums)
         keys = []
         if u_ms:
             keys = [('draft.u_ms_m_s', '%.4g' % u_ms, 'm/s', '1.25', rows[0][3]),
-                    ('draft.dP_ms_kPa', '%.4g' % (float(m.group(1)) / 1000), 'kPa', '1.40',
+                    ('draft.dP_ms_kPa', '%.4g' % (run.dp_ms / 1000), 'kPa', '1.40',
                      rows[0][3])]
-        loop = UmsRun(ums).hysteresis
+        loop = run.hysteresis
         if loop is not None:
             keys.append(('draft.hysteresis_kPa', '%.4g' % (loop / 1000), 'kPa', '',
                          'peak of the increasing branch from the packed bed minus the '
@@ -634,7 +640,7 @@ def build(ums, circ, heat, figure_dir, noplates=(), maps=None, mixing=(), drying
         name, rows, keys, pngs = noplates_section(case)
         if name not in FIGURES:
             sys.exit('results: %s: %s has no section (expected 10 000 or 26 000 particles)'
-                     % (os.path.join(case, 'ums.txt'), name))
+                     % (os.path.join(case, 'ums.json'), name))
         new[name] = (rows, keys, figures(name, case, pngs))
     if maps:
         rows, keys, pngs = maps_section(maps)
@@ -685,7 +691,7 @@ def write_csv(path, new):
 def parse(argv):
     p = cli.parser('results', __doc__)
     p.add_argument('cases', nargs='*', metavar='CASE_DIR',
-                   help='UMS_DIR, a case copy where protocols/minimumSpouting ran (ums.txt, '
+                   help='UMS_DIR, a case copy where protocols/minimumSpouting ran (ums.json, '
                         'ums.csv), then CIRCULATION_DIR, one where protocols/circulation '
                         'and profiles ran')
     p.add_argument('--heat', metavar='HEAT_DIR',
