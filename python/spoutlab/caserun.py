@@ -72,14 +72,10 @@ def run_particles(case='.'):
     its first particles/*.vtp, else the first row of postProcessing/
     coupling.csv; (None, None) before a run."""
     from spoutlab import casefiles as sc
-    folder = os.path.join(case, 'particles')
-    if os.path.isdir(folder):
-        vtps = sorted((f for f in os.listdir(folder)
-                       if f.startswith('particles_') and f.endswith('.vtp')),
-                      key=lambda f: float(f[len('particles_'):-4]))
-        if vtps:
-            path = os.path.join(folder, vtps[0])
-            return len(sc.read_vtp_points(path)), os.path.join('particles', vtps[0])
+    files = sc.particle_files(case)
+    if files:
+        path = files[0][1]
+        return len(sc.read_vtp_points(path)), os.path.join('particles', os.path.basename(path))
     if os.path.isfile(os.path.join(case, 'postProcessing', 'coupling.csv')):
         rows = sc.read_coupling_log(case)
         if rows:

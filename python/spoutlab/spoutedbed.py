@@ -125,9 +125,27 @@ class Geometry:
         the plates' inner faces, or above their upper edge (the fountain)."""
         return abs(x) <= self.Wd / 2 or z >= self.Hd
 
+    # the vessel's cross-section: the slanted base, read both ways, and the
+    # open width it leaves at each height with its integral
     def base_height(self, x):
-        """z of the slanted base at |x| (0 over the inlet slot)."""
+        """z of the slanted base at |x| (0 over the inlet slot), in mm."""
         return max(0.0, (abs(x) - self.Wi / 2) * self.tan)
+
+    def section_width(self, z):
+        """The vessel's width [m] at the height z [m]: the slot, widening
+        along the base up to the walls (plates not taken out)."""
+        return min(self.W * 1e-3, self.Wi * 1e-3 + 2 * max(z, 0.0) / self.tan)
+
+    def section_area(self, h):
+        """The x-z area [m2] of the vessel below h [m], section_width
+        integrated exactly, less the draft plates."""
+        mm = 1e-3
+        W, Wi, top = self.W * mm, self.Wi * mm, self.baseTop * mm
+        hb = min(h, top)
+        area = Wi * hb + hb * hb / self.tan + W * max(0.0, h - top)
+        if self.plates:
+            area -= 2 * self.t * mm * max(0.0, min(h, self.Hd * mm) - self.He * mm)
+        return area
 
     def removed_boxes(self):
         """Boxes (x0, x1, z0, z1) of gas cells removed from the full box:
@@ -178,10 +196,4 @@ def settled_bed(g, vtp):
 def vessel_volume(g, h):
     """Volume [m3] of the vessel below the height h [m]: the slanted base
     widening from the slot to the walls, less the draft plates."""
-    mm = 1e-3
-    W, Wi, Lb, top = g.W * mm, g.Wi * mm, g.Lb * mm, g.baseTop * mm
-    hb = min(h, top)
-    area = Wi * hb + hb * hb / g.tan + W * max(0.0, h - top)
-    if g.plates:
-        area -= 2 * g.t * mm * max(0.0, min(h, g.Hd * mm) - g.He * mm)
-    return area * Lb
+    return g.section_area(h) * (g.Lb * 1e-3)

@@ -38,9 +38,8 @@ def write_times(case='.'):
 
 
 def vtp_times(case='.'):
-    names = [f[len('particles_'):-4] for f in os.listdir(os.path.join(case, 'particles'))
-             if f.startswith('particles_') and f.endswith('.vtp')]
-    return sorted((float(n), n) for n in names)
+    """[(time, name as written)] of the particle files."""
+    return [(t, sc.time_name(path)) for t, path in sc.particle_files(case)]
 
 
 def particle_history(g, case='.'):

@@ -81,14 +81,13 @@ class VesselSection:
 
     def __init__(self, g, region):
         mm = 1e-3
-        self.W, self.Wi, self.Lb = g.W * mm, g.Wi * mm, g.Lb * mm
-        self.tan = g.tan
+        self.g, self.Lb = g, g.Lb * mm
         self.plates = g.plates
         self.t, self.He, self.Hd = g.t * mm, g.He * mm, g.Hd * mm
         self.region = region
 
     def width(self, z):
-        return min(self.W, self.Wi + 2 * max(z, 0.0) / self.tan)
+        return self.g.section_width(z)
 
     def column_width(self, z):
         return min(2 * self.region.half_width, self.width(z))
@@ -219,11 +218,10 @@ def mean_core_ratio(snapshots):
 def classify_case(g, case='.', start=0.0, region=None):
     """Verdict over the particle files particles/particles_<t>.vtp with
     t >= start."""
-    from spoutlab import mixing
     from spoutlab import casefiles as sc
     region = region or SpoutRegion.of(g)
     snapshots = []
-    for t, path in mixing.particle_files(case):
+    for t, path in sc.particle_files(case):
         if t < start - 1e-9:
             continue
         points = sc.read_vtp_points(path)
@@ -246,11 +244,10 @@ def bed_spouts(g, case, t0, t1):
     the window), with its default spout region for the vessel.  The one
     place the protocols ask; returns the classifier's Verdict (.spouts,
     .describe())."""
-    from spoutlab import mixing
     from spoutlab import casefiles as sc
     region = SpoutRegion.of(g)
     snapshots = []
-    for t, path in mixing.particle_files(case):
+    for t, path in sc.particle_files(case):
         if t0 - WINDOW_SLACK <= t <= t1 + WINDOW_SLACK:
             vz = sc.read_vtp_array(path, 'velocity')[2::3]
             snapshots.append(measure(g, region, sc.read_vtp_points(path), vz,

@@ -34,7 +34,6 @@ import subprocess
 import sys
 
 from spoutlab import cli
-from spoutlab import mixing
 from spoutlab import casefiles as sc
 from spoutlab import spoutedbed
 from spoutlab import bedmaps
@@ -162,7 +161,7 @@ def evaluate(o, steps, g):
 def snapshots(g, done):
     """Particles coloured by vertical velocity at the last particle output
     of each step: snapshot_<branch>_u<u>.png."""
-    series = mixing.particle_files('.')
+    series = sc.particle_files('.')
     names = []
     for s in done:
         shown = [(t, f) for t, f in series if t <= s.end + 1e-6]

@@ -115,7 +115,7 @@ class Run:
         g = spoutedbed.load(self.work)
         labelled = os.path.join(self.work, mixing.LABELLED_DIR)
         files = [(t, os.path.join(labelled, os.path.basename(path)))
-                 for t, path in mixing.particle_files(self.work)]
+                 for t, path in sc.particle_files(self.work)]
         names = []
         shown = {min(files, key=lambda f: abs(f[0] - want)) for want in (1.0, self.t[-1])}
         for t, vtp in sorted(shown):
