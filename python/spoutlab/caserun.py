@@ -43,15 +43,11 @@ def run_spoutfoam(end, ranks, who):
     controlDict's end time, printing progress every 10 s of wall time."""
     import subprocess
     import time
-    if ranks > 1:
-        if not os.path.isdir('processor0'):
-            subprocess.check_call(['bash', '-c', '. "$SPOUTLAB_DIR/etc/caseFunctions" '
-                                   '&& decomposeSlabs %d' % ranks])
-        cmd = (['mpirun', '-np', str(ranks)]
-               + os.environ.get('SPOUTLAB_MPIRUN_ARGS', '').split()
-               + ['spoutFoam', '-parallel'])
-    else:
-        cmd = ['spoutFoam']
+    if ranks > 1 and not os.path.isdir('processor0'):
+        subprocess.check_call(['bash', '-c', '. "$SPOUTLAB_DIR/etc/caseFunctions" '
+                               '&& decomposeSlabs %d' % ranks])
+    # the one launch, etc/caseFunctions launchSpoutFoam
+    cmd = ['bash', '-c', '. "$SPOUTLAB_DIR/etc/caseFunctions" && launchSpoutFoam %d' % ranks]
     start = last_time('log.spoutFoam') or 0.0
     log = open('log.spoutFoam', 'a')
     proc = subprocess.Popen(cmd, stdout=log, stderr=subprocess.STDOUT)
