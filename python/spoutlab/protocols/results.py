@@ -24,18 +24,18 @@ from spoutlab import profilefeatures
 from spoutlab.protocols import mixing as mixing_protocol
 
 
-def read_json(case, name, protocol):
+def read_json(case, name, remedy):
     """A protocol's numbers, NAME in the case copy it ran in; one line if
-    they are not there (a run from before the protocols wrote them: its
-    --report writes them again from the finished steps)."""
+    they are not there (a run from before the protocols wrote them): what
+    the file is missing for and REMEDY, the command that writes it again
+    from the finished runs."""
     path = os.path.join(case, name)
     try:
         with open(path) as f:
             return json.load(f)
     except (OSError, ValueError) as e:
-        sys.exit('results: %s: %s (protocols/%s --report in that case writes it from its '
-                 'finished steps)' % (path, e.strerror if isinstance(e, OSError) else
-                                      'not JSON: %s' % e, protocol))
+        sys.exit('results: %s: %s (%s in that case writes it from its finished runs)'
+                 % (path, e.strerror if isinstance(e, OSError) else 'not JSON: %s' % e, remedy))
 
 
 def wall_time(case):
@@ -64,7 +64,7 @@ class UmsRun:
 
     def __init__(self, case):
         self.case = case
-        r = read_json(case, 'ums.json', 'minimumSpouting')
+        r = read_json(case, 'ums.json', 'protocols/minimumSpouting --report with its options')
         self.particles, self.bed, self.plates = r['particles'], r['bed_height_m'], r['plates']
         self.settings = r['settings']
         self.hours = wall_time(case) / 3600
@@ -331,18 +331,16 @@ KEY_MIXING_POINTS = (('no-plates', 10000, 2.0), ('no-plates', 26000, 2.5),
 
 
 def profile_rows(case):
-    path = os.path.join(case, 'profiles.txt')
-    if not os.path.isfile(path):
+    """The profiles protocol's features (profiles.json), a row each."""
+    if not os.path.isfile(os.path.join(case, 'profiles.txt')):
         return []
-    rows, u = [], None
-    for line in open(path):
-        m = re.match(r'u_s = ([\d.]+) m/s', line)
-        if m:
-            u = m.group(1)
-        m = re.match(r'\s+(.+?)\s+lower (\S+) m/s, upper (\S+) m/s: (yes|NO)', line)
-        if m:
-            rows.append(('%s (u_s = %s m/s)' % (m.group(1), u),
-                         '%s: lower %s, upper %s m/s' % (m.group(4), m.group(2), m.group(3)),
+    rows = []
+    for point in read_json(case, 'profiles.json', 'protocols/profiles with its options')['points']:
+        u = '%g' % point['u_m_s']
+        for f in point['features']:
+            rows.append(('%s (u_s = %s m/s)' % (f['feature'], u),
+                         '%s: lower %.3f, upper %.3f m/s' % ('yes' if f['holds'] else 'NO',
+                                                              f['lower_m_s'], f['upper_m_s']),
                          'yes (Figs 4a, 5)', 'profiles protocol; lower region z/R_d < 12',
                          '%.2f h' % (wall_time(os.path.join(case, 'runs', 'He95_u%s' % u))
                                      / 3600)))
@@ -409,21 +407,18 @@ def circulation_rows(case, study):
     friction study, the fitted slope."""
     rows, points, slope = [], [], None
     for _ in (study,):
-        path = os.path.join(case, 'circulation_%s.txt' % study)
-        if not os.path.isfile(path):
+        if not os.path.isfile(os.path.join(case, 'circulation_%s.txt' % study)):
             continue
-        mus, logs, how = [], [], ''
-        for line in open(path):
-            if line.startswith('#'):
-                how = line[1:].strip()
-                continue
-            label = line.split()[0]
-            m = re.search(r'u_s = ([\d.]+) m/s\s+W_s = ([\d.]+) kg/s\s+correlation ([\d.]+)', line)
-            ws, ref = float(m.group(2)), float(m.group(3))
+        mus, logs = [], []
+        table = read_json(case, 'circulation_%s.json' % study,
+                          'protocols/circulation %s with its options' % study)
+        how = table['settings']
+        for p in table['points']:
+            label, ws, ref = p['label'], p['W_s_kg_s'], p['correlation_kg_s']
             points.append((label, ws, ref))
             rows.append(('W_s, %s' % label, '%.3f kg/s (%+.0f %%)' % (ws, 100 * (ws / ref - 1)),
                          '%.3f kg/s (eq %s)' % (ref, '15' if study == 'velocity' else '16'),
-                         'u_s = %s m/s; %s' % (m.group(1), how),
+                         'u_s = %.2f m/s; %s' % (p['u_m_s'], how),
                          '%.2f h' % (wall_time(os.path.join(case, 'runs', label)) / 3600)))
             if study == 'friction' and ws > 0:
                 mus.append(float(label[2:label.index('_')]))
@@ -482,7 +477,7 @@ def heat_section(case):
 def drying_section(case):
     """The dryer from protocols/drying's drying.json: the single-kernel checks
     and the bed."""
-    r = read_json(case, 'drying.json', 'drying')
+    r = read_json(case, 'drying.json', 'protocols/drying with its options')
     k, b = r.get('kernel', {}), r.get('bed')
     rows, keys = [], []
     if 'wetBulb' in k:
