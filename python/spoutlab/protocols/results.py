@@ -245,26 +245,20 @@ MAP_FEATURES = {
 def maps_section(case):
     """The velocity maps (protocols/velocityMaps' maps.txt): a row per
     feature and run, the maps and profiles as figures."""
-    text = open(os.path.join(case, 'maps.txt')).read()
-    settings = text.splitlines()[0]
-    rows, figures, label = [], [], None
-    for line in text.splitlines()[1:]:
-        m = re.match(r'(noplates_n(\d+)_u([\d.]+)): .*settled bed ([\d.]+) m', line)
-        if m:
-            label, n, u = m.group(1), int(m.group(2)), m.group(3)
-            hours = wall_time(os.path.join(case, 'runs', label)) / 3600
-            paper = '%g m' % NOPLATE_BEDS[n] if n in NOPLATE_BEDS else ''
-            rows.append(('settled bed, %d particles' % n, '%s m' % m.group(4), paper, settings,
-                         '%.2f h' % hours))
-            continue
-        m = re.match(r'\s+(.+?)\s+(yes|NO): (.*)$', line)
-        if m and label:
-            rows.append(('%s (%d particles, u_s = %s m/s)' % (m.group(1), n, u),
-                         '%s: %s' % (m.group(2), m.group(3)), MAP_FEATURES.get(m.group(1), ''),
-                         settings, '%.2f h' % hours))
-        m = re.match(r'\s+pictures: (.*)$', line)
-        if m:
-            figures += [(f, 'noplates_' + f) for f in m.group(1).split()]
+    maps = read_json(case, 'maps.json', 'protocols/velocityMaps with its options')
+    settings = maps['settings']
+    rows, figures = [], []
+    for run in maps['runs']:
+        label, n, u = run['label'], run['particles'], '%g' % run['u_m_s']
+        hours = wall_time(os.path.join(case, 'runs', label)) / 3600
+        paper = '%g m' % NOPLATE_BEDS[n] if n in NOPLATE_BEDS else ''
+        rows.append(('settled bed, %d particles' % n, '%.3f m' % run['bed_height_m'], paper,
+                     settings, '%.2f h' % hours))
+        for f in run['features']:
+            rows.append(('%s (%d particles, u_s = %s m/s)' % (f['feature'], n, u),
+                         '%s: %s' % ('yes' if f['holds'] else 'NO', f['measured']),
+                         MAP_FEATURES.get(f['feature'], ''), settings, '%.2f h' % hours))
+        figures += [(f, 'noplates_' + f) for f in run['pictures']]
     return rows, [], figures
 
 
@@ -289,36 +283,33 @@ def mixing_section(case):
     (--time) get keys ending in _t<time>, and the figures of a case copy
     that holds only such runs end so too, so that a longer run can stand
     beside the default ones."""
-    lines = open(os.path.join(case, 'mixing.txt')).read().splitlines()
-    settings = lines[0].lstrip('# ')
+    numbers = read_json(case, 'mixing.json', 'protocols/mixing')
+    settings = numbers['settings']
     rows, keys, figures = [], [], []
     times = set()
-    for line in lines[1:]:
-        m = re.match(r'(mix_(no)?plates_n(\d+)_u([\d.]+)): [^:]*, ([\d.]+) s: M_final ([\d.-]+) '
-                     r'\(papers, left-right\), Lacey ([\d.-]+); lower-upper ([\d.-]+), Lacey '
-                     r'([\d.-]+);.*?snapshots: (.*)$', line)
-        if not m:
-            continue
-        label, vessel = m.group(1), 'no-plates' if m.group(2) else 'plates'
-        n, u, t_run = int(m.group(3)), float(m.group(4)), m.group(5)
+    for r in numbers['runs']:
+        label, vessel = r['label'], r['vessel']
+        n, u, t_run = r['particles'], r['u_m_s'], '%.3g' % r['time_s']
+        M = tuple('%.3f' % r[k] for k in ('M_papers_left_right', 'M_lacey_left_right',
+                                           'M_papers_lower_upper', 'M_lacey_lower_upper'))
         times.add(float(t_run))
         tag = '' if float(t_run) == mixing_protocol.DEFAULT_TIME else '_t%g' % float(t_run)
         paper = mixing_paper(vessel, n, u)
         hours = wall_time(os.path.join(case, 'runs', label)) / 3600
         rows.append(('M_final, %s, %d particles, u_s = %.1f m/s' % (
             'no draft plates' if vessel == 'no-plates' else 'draft plates', n, u),
-            '%s (Lacey %s; lower-upper %s, Lacey %s)' % m.group(6, 7, 8, 9), paper,
+            '%s (Lacey %s; lower-upper %s, Lacey %s)' % M, paper,
             '%s; %s s' % (settings, t_run), '%.2f h' % hours))
         bed = 'mixing%dk' % round(n / 1000) if vessel == 'no-plates' \
             else 'mixingDraft%dk' % round(n / 1000)
         key = ('%s.M_final' % bed if (vessel, n, u) == ('no-plates', 10000, 2.0)
                else '%s.M_final_u%.1f' % (bed, u)) + tag
-        keys.append((key, m.group(6), '', paper.split(' ')[0] if paper[:1].isdigit() else '',
+        keys.append((key, M[0], '', paper.split(' ')[0] if paper[:1].isdigit() else '',
                      'papers\' M, left-right halves; %s; %s s at %.1f m/s; Lacey %s' % (
-                         settings, t_run, u, m.group(7))))
+                         settings, t_run, u, M[1])))
         if (vessel, n, u) in KEY_MIXING_POINTS:
             # the labels at the end of the run (Figs 8-9 by colour)
-            last = [f for f in m.group(10).split() if f.endswith('_label.png')][-1:]
+            last = [f for f in r['snapshots'] if f.endswith('_label.png')][-1:]
             figures += [(f, 'mixing_' + f) for f in last]
     beds = sorted({f for f in os.listdir(case) if re.match(r'mixing_\w+_n\d+\.png$', f)})
     tag = '_t%g' % min(times) if times and mixing_protocol.DEFAULT_TIME not in times else ''

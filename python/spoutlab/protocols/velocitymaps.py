@@ -9,12 +9,14 @@ bed broken through at --kick, then u_s to --time; averages over the last
 --average seconds); finished runs are kept, so running the command again
 after an interruption continues.
 
-Results: maps.txt, maps_<label>_{gasVelocity,particleVelocity}.png (maps),
+Results: maps.txt (and maps.json, its numbers for protocols/results),
+maps_<label>_{gasVelocity,particleVelocity}.png (maps),
 maps_<label>_profiles.png and maps_<label>_profiles.csv (profiles across the
 width every 5 gas cells, 95 mm, of height up to the settled bed).
 """
 import argparse
 import concurrent.futures
+import json
 import math
 import os
 import sys
@@ -184,18 +186,27 @@ def main(argv):
     lines = ['time-averaged velocities without draft plates (no-draft paper, Figs 3-4): %g s '
              'per run (broken through at %s m/s for %s s), averaged over the last %g s'
              % ((o['time'],) + tuple(o['kick'].split(',')) + (o['average'],))]
+    runs = []      # what maps.txt says, for protocols/results (maps.json)
     for (label, n, u), work in zip(points, works):
         f = Fields(work)
         pictures = draw(f, label, '%d particles, u_s = %g m/s' % (n, u))
         lines.append('')
         lines.append('%s: %d particles, u_s = %g m/s, settled bed %.3f m (%s)'
                      % (label, n, u, f.bed, work))
-        for statement, measured, holds in features(f):
+        found = features(f)
+        for statement, measured, holds in found:
             lines.append('  %-44s %s: %s' % (statement, 'yes' if holds else 'NO', measured))
         lines.append('  pictures: ' + ' '.join(pictures))
+        runs.append({'label': label, 'particles': n, 'u_m_s': float('%g' % u),
+                     'bed_height_m': float('%.3f' % f.bed), 'pictures': pictures,
+                     'features': [{'feature': statement, 'holds': bool(holds),
+                                   'measured': measured} for statement, measured, holds in found]})
     text = '\n'.join(lines) + '\n'
     sys.stdout.write(text)
     open('maps.txt', 'w').write(text)
+    with open('maps.json', 'w') as out:
+        json.dump({'settings': lines[0], 'runs': runs}, out, indent=1)
+        out.write('\n')
     return 0
 
 
