@@ -15,10 +15,14 @@ import argparse
 import os
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-sys.path.insert(1, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'python'))
-from spoutlab import cli  # noqa: E402  (the one-line bad-option parser)
-from vtkreaders import ReadError, read_collection, read_xml  # noqa: E402
+try:
+    from spoutlab import cli  # the one-line bad-option parser
+except ModuleNotFoundError as e:
+    if e.name != 'spoutlab':
+        raise
+    sys.exit("particles.py: cannot find SpoutLab's Python package: source its environment "
+             "first, '. <SpoutLab directory>/etc/bashrc'")
+from spoutlab.vtkreaders import ReadError, read_collection, read_xml  # noqa: E402
 
 from vtkmodules.vtkFiltersSources import vtkSphereSource  # noqa: E402
 from vtkmodules.vtkIOImage import vtkPNGWriter  # noqa: E402

@@ -1,14 +1,11 @@
 """A column's layers from the particles (spoutlab.bedlayers): exact sphere
 slices, and the divided model's pieces as the solver places them."""
 import math
-import os
-import sys
 import unittest
 
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.environ.get('SPOUTLAB_DIR', '../..'), 'etc', 'python'))
-from spoutlab import bedlayers as bl  # noqa: E402
+from spoutlab import bedlayers as bl
 
 FACES = 0.01 * np.arange(6)
 LOWER, UPPER = [0.0, 0.0, 0.0], [0.12, 0.04, 0.05]

@@ -6,13 +6,11 @@ import contextlib
 import io
 import os
 import shutil
-import sys
 import tempfile
 import unittest
 
-sys.path.insert(0, os.path.join(os.environ.get('SPOUTLAB_DIR', '../..'), 'etc', 'python'))
-from spoutlab import casefiles as sc  # noqa: E402
-from spoutlab import spoutheat  # noqa: E402
+from spoutlab import casefiles as sc
+from spoutlab import spoutheat
 
 
 class InDirectory(unittest.TestCase):

@@ -8,13 +8,11 @@ import os
 import shutil
 import signal
 import subprocess
-import sys
 import tempfile
 import unittest
 
-sys.path.insert(0, os.path.join(os.environ.get('SPOUTLAB_DIR', '../..'), 'etc', 'python'))
-from spoutlab.protocols import circulation, drying, heattransfer, minimumspouting  # noqa: E402
-from spoutlab.protocols import mixing, profiles, results, velocitymaps  # noqa: E402
+from spoutlab.protocols import circulation, drying, heattransfer, minimumspouting
+from spoutlab.protocols import mixing, profiles, results, velocitymaps
 
 REPOSITORY = os.path.abspath(os.environ.get('SPOUTLAB_DIR', '../..'))
 COMMANDS = ['generate', 'inletVelocity', 'evaluate'] + [
@@ -87,7 +85,7 @@ class Commands(unittest.TestCase):
                                 lines[0])
 
     def test_the_modules_and_the_particle_picture(self):
-        env = dict(os.environ, PYTHONPATH=os.path.join(REPOSITORY, 'etc', 'python'))
+        env = dict(os.environ, PYTHONPATH=os.path.join(REPOSITORY, 'python'))
         for name, command in (
                 ('mixing', ['-m', 'spoutlab.mixing', CASE]),
                 ('decomposition', ['-m', 'spoutlab.decomposition', CASE, '2']),

@@ -3,25 +3,14 @@ counts it accepts, what it reads from a LIGGGHTS log of a parallel run, the
 side-by-side figures of serial and 2-rank runs (ratios and speed-ups worked
 out here by hand from made-up times) and when it warns that other programs
 spoilt a run. The benchmark's figures themselves are not tested."""
-import importlib.machinery
-import importlib.util
 import os
 import tempfile
 import unittest
 
+from spoutlab.bench import couplingoverhead as co
+from spoutlab.bench import weakscaling as weak
+
 REPOSITORY = os.path.abspath(os.environ.get('SPOUTLAB_DIR', '../..'))
-
-
-def load_bench():
-    path = os.path.join(REPOSITORY, 'bench', 'couplingOverhead')
-    loader = importlib.machinery.SourceFileLoader('couplingOverhead', path)
-    spec = importlib.util.spec_from_loader('couplingOverhead', loader)
-    module = importlib.util.module_from_spec(spec)
-    loader.exec_module(module)
-    return module
-
-
-co = load_bench()
 
 
 def runs(coupled_loop, inside, alone_loop, coupled_wall, alone_wall, others=0.0):
@@ -123,15 +112,6 @@ class OtherLoad(unittest.TestCase):
         self.assertNotIn('meaningless', co.side_by_side({1: SERIAL, 2: TWO}, cores=2))
 
 
-def load_weak():
-    path = os.path.join(REPOSITORY, 'bench', 'weakScaling')
-    loader = importlib.machinery.SourceFileLoader('weakScaling', path)
-    module = importlib.util.module_from_spec(importlib.util.spec_from_loader(
-        'weakScaling', loader))
-    loader.exec_module(module)
-    return module
-
-
 class WeakScaling(unittest.TestCase):
     """bench/weakScaling: the widened column and what it reads from the
     solver's log."""
@@ -192,9 +172,6 @@ class WeakScaling(unittest.TestCase):
         row = weak.summary(1, *weak.exchange(log))
         self.assertEqual((row['halo_cells_max'], row['messages_max'], row['kB_max']),
                          (0, 0.0, 0.0))
-
-
-weak = load_weak()
 
 
 if __name__ == '__main__':

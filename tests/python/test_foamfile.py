@@ -5,12 +5,10 @@ reader) where it is installed."""
 import os
 import shutil
 import subprocess
-import sys
 import tempfile
 import unittest
 
-sys.path.insert(0, os.path.join(os.environ.get('SPOUTLAB_DIR', '../..'), 'etc', 'python'))
-from spoutlab import foamfile  # noqa: E402
+from spoutlab import foamfile
 
 REPOSITORY = os.path.abspath(os.environ.get('SPOUTLAB_DIR', '../..'))
 

@@ -3,13 +3,11 @@
 correlations, the energy bookkeeping on a history built to balance, and a
 restarted run's log."""
 import os
-import sys
 import tempfile
 import unittest
 
-sys.path.insert(0, os.path.join(os.environ.get('SPOUTLAB_DIR', '../..'), 'etc', 'python'))
-from spoutlab import heatcorrelations as hc  # noqa: E402
-from spoutlab import casefiles as sc  # noqa: E402
+from spoutlab import heatcorrelations as hc
+from spoutlab import casefiles as sc
 
 # air as in the C++ hand values (tests/unit/test_HeatTransfer.cpp)
 AIR = dict(rho=1.0324, mu=2.029e-5, cp=1008.6, kappa=0.02917)

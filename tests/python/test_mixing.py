@@ -19,13 +19,11 @@ import math
 import os
 import random
 import shutil
-import sys
 import tempfile
 import unittest
 
-sys.path.insert(0, os.path.join(os.environ.get('SPOUTLAB_DIR', '../..'), 'etc', 'python'))
-from spoutlab import mixing  # noqa: E402
-from spoutlab import casefiles as sc  # noqa: E402
+from spoutlab import mixing
+from spoutlab import casefiles as sc
 
 CELL = (0.055, 0.057)
 

@@ -1,14 +1,11 @@
 """The drying references' psychrometrics (spoutlab.moistair) against the
 steam tables and by hand."""
 import math
-import os
-import sys
 import unittest
 
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.environ.get('SPOUTLAB_DIR', '../..'), 'etc', 'python'))
-from spoutlab import moistair as ma  # noqa: E402
+from spoutlab import moistair as ma
 
 
 class SaturationPressure(unittest.TestCase):

@@ -4,16 +4,13 @@ change the gas dries at the film wet bulb and heats up once dry as worked
 out by hand, nothing moves before the gas arrives, and the water the
 kernels lose is the vapour the gas carries away."""
 import math
-import os
-import sys
 import unittest
 
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.environ.get('SPOUTLAB_DIR', '../..'), 'etc', 'python'))
-from spoutlab import moistair as ma  # noqa: E402
-from spoutlab import packedbeddrying as pbd  # noqa: E402
-from spoutlab import packedbedheat as pb  # noqa: E402
+from spoutlab import moistair as ma
+from spoutlab import packedbeddrying as pbd
+from spoutlab import packedbedheat as pb
 
 # the verification case's kernels and gas (openfoam_cases/packedBedDrying)
 GAS = dict(u_s=0.8, d=0.008, rho_d=1230.0, c_d=10.0, rho_g=1.0416, cp_air=1007.0)

@@ -2,7 +2,6 @@
 of the two-phase plug-flow model, and the numerical solver for beds whose
 voidage and heat-transfer coefficient change from layer to layer."""
 import math
-import os
 import sys
 import unittest
 
@@ -11,8 +10,7 @@ from scipy.integrate import quad
 from scipy.special import i0
 from scipy.stats import ncx2
 
-sys.path.insert(0, os.path.join(os.environ.get('SPOUTLAB_DIR', '../..'), 'etc', 'python'))
-from spoutlab import packedbedheat as pb  # noqa: E402
+from spoutlab import packedbedheat as pb
 
 # the verification case: 8 mm particles with a heat capacity made small so
 # that the front crosses the bed in seconds

@@ -3,11 +3,17 @@ paper's quantities: u_ms and the hysteresis from the pressure-drop curve
 and the spout classifier's verdicts, the step schedule, Ergun's u_mf."""
 import math
 import os
-import sys
 import unittest
 
-sys.path.insert(0, os.path.join(os.environ.get('SPOUTLAB_DIR', '../..'), 'etc', 'python'))
-from spoutlab import spoutedbed  # noqa: E402
+from spoutlab import spoutedbed
+
+from spoutlab import bedmaps
+
+from spoutlab import profilefeatures
+
+from spoutlab import spoutcorrelations
+
+from spoutlab import spoutingloop
 
 
 class KudraEq12(unittest.TestCase):
@@ -18,13 +24,13 @@ class KudraEq12(unittest.TestCase):
                                      'openfoam_cases', 'spoutDraftPlates'))
 
     def test_scaled_as_the_paper_does(self):
-        self.assertAlmostEqual(spoutedbed.kudra_ums(self.g, 0.9), 1.18, delta=0.005)
+        self.assertAlmostEqual(spoutcorrelations.kudra_ums(self.g, 0.9), 1.18, delta=0.005)
 
     def test_evaluated_directly_for_spheres_agrees_with_the_scaling(self):
-        self.assertAlmostEqual(spoutedbed.kudra_eq12(self.g, 0.9), 1.18, delta=0.01)
+        self.assertAlmostEqual(spoutcorrelations.kudra_eq12(self.g, 0.9), 1.18, delta=0.01)
 
     def test_a_lower_bed_spouts_at_a_higher_velocity(self):
-        self.assertGreater(spoutedbed.kudra_eq12(self.g, 0.8), spoutedbed.kudra_eq12(self.g, 0.9))
+        self.assertGreater(spoutcorrelations.kudra_eq12(self.g, 0.8), spoutcorrelations.kudra_eq12(self.g, 0.9))
 
 
 class MinimumSpouting(unittest.TestCase):
@@ -34,17 +40,17 @@ class MinimumSpouting(unittest.TestCase):
 
     def test_u_ms_is_the_last_spouting_step_before_a_collapse(self):
         # the paper's criterion: the point below which dP rises steeply
-        self.assertEqual(spoutedbed.minimum_spouting(self.down), (1.2, 1100, 1500))
+        self.assertEqual(spoutingloop.minimum_spouting(self.down), (1.2, 1100, 1500))
 
     def test_a_spout_that_pinches_off_once_and_recovers_is_not_collapsed(self):
         down = [(1.5, 1000, True), (1.4, 1040, False), (1.3, 1070, True), (1.2, 1400, False),
                 (1.1, 1500, False)]
-        self.assertEqual(spoutedbed.minimum_spouting(down), (1.3, 1070, 1400))
+        self.assertEqual(spoutingloop.minimum_spouting(down), (1.3, 1070, 1400))
 
     def test_a_spout_that_never_stops_has_no_u_ms(self):
-        self.assertIsNone(spoutedbed.minimum_spouting(self.down[:4]))
-        self.assertIsNone(spoutedbed.minimum_spouting(self.down[:1]))
-        self.assertIsNone(spoutedbed.minimum_spouting([]))
+        self.assertIsNone(spoutingloop.minimum_spouting(self.down[:4]))
+        self.assertIsNone(spoutingloop.minimum_spouting(self.down[:1]))
+        self.assertIsNone(spoutingloop.minimum_spouting([]))
 
 
 class SteepestRise(unittest.TestCase):
@@ -55,21 +61,21 @@ class SteepestRise(unittest.TestCase):
             (1.8, 2900, False), (1.7, 3300, False)]
 
     def test_u_ms_is_the_step_before_the_largest_rise(self):
-        self.assertEqual(spoutedbed.steepest_rise(self.down), (1.9, 1760, 2900))
+        self.assertEqual(spoutingloop.steepest_rise(self.down), (1.9, 1760, 2900))
 
     def test_a_falling_or_flat_curve_has_no_rise(self):
-        self.assertIsNone(spoutedbed.steepest_rise([(2.0, 1700, True), (1.9, 1690, True)]))
-        self.assertIsNone(spoutedbed.steepest_rise(self.down[:1]))
-        self.assertIsNone(spoutedbed.steepest_rise([]))
+        self.assertIsNone(spoutingloop.steepest_rise([(2.0, 1700, True), (1.9, 1690, True)]))
+        self.assertIsNone(spoutingloop.steepest_rise(self.down[:1]))
+        self.assertIsNone(spoutingloop.steepest_rise([]))
 
 
 class SpoutReforms(unittest.TestCase):
     def test_first_step_spouting_again(self):
         up = [(0.9, 1500, False), (1.0, 1560, False), (1.1, 1600, True), (1.2, 1100, True)]
-        self.assertEqual(spoutedbed.spout_reforms(up), (1.1, 1600))
+        self.assertEqual(spoutingloop.spout_reforms(up), (1.1, 1600))
 
     def test_never_reforms(self):
-        self.assertIsNone(spoutedbed.spout_reforms([(0.9, 1500, False), (1.0, 1560, False)]))
+        self.assertIsNone(spoutingloop.spout_reforms([(0.9, 1500, False), (1.0, 1560, False)]))
 
 
 class PackedBranch(unittest.TestCase):
@@ -80,27 +86,27 @@ class PackedBranch(unittest.TestCase):
     down = [(1.3, 1380, True), (1.2, 1300, True), (1.1, 1250, True), (1.0, 1600, False)]
 
     def test_peak_and_break_through(self):
-        self.assertEqual(spoutedbed.break_through(self.packed), (1.2, 1900, 1.3, 1450))
+        self.assertEqual(spoutingloop.break_through(self.packed), (1.2, 1900, 1.3, 1450))
 
     def test_a_bed_that_never_spouts_has_a_peak_but_no_break_through(self):
-        self.assertEqual(spoutedbed.break_through(self.packed[:3]), (1.2, 1900, None, None))
-        self.assertIsNone(spoutedbed.break_through([]))
+        self.assertEqual(spoutingloop.break_through(self.packed[:3]), (1.2, 1900, None, None))
+        self.assertIsNone(spoutingloop.break_through([]))
 
     def test_the_peak_is_taken_before_the_break_through_only(self):
         # a later, higher reading (a slug) above the break-through is not the peak
         packed = self.packed[:4] + [(1.4, 2500, True)]
-        self.assertEqual(spoutedbed.break_through(packed)[:2], (1.2, 1900))
+        self.assertEqual(spoutingloop.break_through(packed)[:2], (1.2, 1900))
 
     def test_hysteresis_is_the_peak_minus_the_decreasing_branch_at_its_velocity(self):
-        self.assertAlmostEqual(spoutedbed.hysteresis(self.packed, self.down), 1900 - 1300)
+        self.assertAlmostEqual(spoutingloop.hysteresis(self.packed, self.down), 1900 - 1300)
 
     def test_hysteresis_interpolates_between_decreasing_steps(self):
         down = [(1.3, 1380, True), (1.1, 1250, True), (1.0, 1600, False)]
-        self.assertAlmostEqual(spoutedbed.hysteresis(self.packed, down), 1900 - 1315)
+        self.assertAlmostEqual(spoutingloop.hysteresis(self.packed, down), 1900 - 1315)
 
     def test_no_hysteresis_outside_the_decreasing_branch(self):
-        self.assertIsNone(spoutedbed.hysteresis(self.packed, self.down[:1]))
-        self.assertIsNone(spoutedbed.hysteresis(self.packed, []))
+        self.assertIsNone(spoutingloop.hysteresis(self.packed, self.down[:1]))
+        self.assertIsNone(spoutingloop.hysteresis(self.packed, []))
 
 
 class ErgunMinimumFluidisation(unittest.TestCase):
@@ -109,13 +115,13 @@ class ErgunMinimumFluidisation(unittest.TestCase):
 
     def test_wen_yu_form_gives_the_papers_value(self):
         # the no-draft paper quotes 1.746 m/s 'irregardless of the bed height'
-        u = spoutedbed.ergun_umf(self.d, self.rho_p, self.rho_g, self.mu)
+        u = spoutcorrelations.ergun_umf(self.d, self.rho_p, self.rho_g, self.mu)
         self.assertAlmostEqual(u, 1.746, delta=0.002)
 
     def test_at_a_given_voidage_by_hand(self):
         # Ar = 150 (1-e)/e^3 Re + 1.75/e^3 Re^2 at e = 0.4, solved by hand:
         # Ar = d^3 rho_g (rho_p - rho_g) g / mu^2 = 2.2718e7, Re = 886.4
-        u = spoutedbed.ergun_umf(self.d, self.rho_p, self.rho_g, self.mu, eps_mf=0.4)
+        u = spoutcorrelations.ergun_umf(self.d, self.rho_p, self.rho_g, self.mu, eps_mf=0.4)
         Ar = self.d**3 * self.rho_g * (self.rho_p - self.rho_g) * 9.81 / self.mu**2
         a, b = 1.75 / 0.4**3, 150 * 0.6 / 0.4**3
         re = (-b + (b * b + 4 * a * Ar) ** 0.5) / (2 * a)
@@ -123,7 +129,7 @@ class ErgunMinimumFluidisation(unittest.TestCase):
         self.assertAlmostEqual(u, 1.664, delta=0.002)
 
     def test_a_looser_bed_fluidises_later(self):
-        u = [spoutedbed.ergun_umf(self.d, self.rho_p, self.rho_g, self.mu, eps_mf=e)
+        u = [spoutcorrelations.ergun_umf(self.d, self.rho_p, self.rho_g, self.mu, eps_mf=e)
              for e in (0.38, 0.42, 0.46)]
         self.assertTrue(u[0] < u[1] < u[2])
 
@@ -170,7 +176,7 @@ class VesselVolume(unittest.TestCase):
 class ClippedOutline(unittest.TestCase):
     def test_segments_end_at_the_top_of_the_map(self):
         segs = [(0, 0, 0, 2), (0, 0, 1, 2), (0, 3, 1, 4), (0, 0.5, 1, 0.5)]
-        self.assertEqual(spoutedbed.clipped(segs, 1.0),
+        self.assertEqual(bedmaps.clipped(segs, 1.0),
                          [(0, 0, 0, 1.0), (0, 0, 0.5, 1.0), (0, 0.5, 1, 0.5)])
 
 
@@ -194,24 +200,24 @@ class NextStep(unittest.TestCase):
         return u >= {'packed': 1.3, 'down': 1.1, 'up': 1.2}[branch] - 1e-9
 
     def test_packed_branch_rises_until_two_spouting_steps_then_falls_to_a_confirmed_collapse(self):
-        plan = spoutedbed.Schedule(step=0.1, stop=0.8, rise_from=1.0, top=3.0)
+        plan = spoutingloop.Schedule(step=0.1, stop=0.8, rise_from=1.0, top=3.0)
         self.assertEqual(self.schedule(self.bed, plan),
                          [(1.0, 'packed'), (1.1, 'packed'), (1.2, 'packed'), (1.3, 'packed'),
                           (1.4, 'packed'), (1.3, 'down'), (1.2, 'down'), (1.1, 'down'),
                           (1.0, 'down'), (0.9, 'down')])
 
     def test_with_up_it_rises_again_until_two_spouting_steps(self):
-        plan = spoutedbed.Schedule(step=0.1, stop=0.8, rise_from=1.0, top=3.0, up=True)
+        plan = spoutingloop.Schedule(step=0.1, stop=0.8, rise_from=1.0, top=3.0, up=True)
         self.assertEqual(self.schedule(self.bed, plan)[-4:],
                          [(1.0, 'up'), (1.1, 'up'), (1.2, 'up'), (1.3, 'up')])
 
     def test_a_bed_that_never_spouts_rises_to_the_top_and_stops(self):
-        plan = spoutedbed.Schedule(step=0.2, stop=0.8, rise_from=2.0, top=3.0)
+        plan = spoutingloop.Schedule(step=0.2, stop=0.8, rise_from=2.0, top=3.0)
         steps = self.schedule(lambda u, b: False, plan)
         self.assertEqual(steps, [(u, 'packed') for u in (2.0, 2.2, 2.4, 2.6, 2.8, 3.0)])
 
     def test_a_break_through_at_the_top_still_gets_its_decreasing_branch(self):
-        plan = spoutedbed.Schedule(step=0.5, stop=1.0, rise_from=2.0, top=3.0)
+        plan = spoutingloop.Schedule(step=0.5, stop=1.0, rise_from=2.0, top=3.0)
         steps = self.schedule(lambda u, b: u >= 3.0 if b == 'packed' else u >= 2.0, plan)
         self.assertEqual(steps, [(2.0, 'packed'), (2.5, 'packed'), (3.0, 'packed'),
                                  (2.5, 'down'), (2.0, 'down'), (1.5, 'down'), (1.0, 'down')])
@@ -222,41 +228,41 @@ class NextStep(unittest.TestCase):
         expected = [(2.0, 'packed'), (2.5, 'packed'), (3.0, 'packed'),
                     (2.5, 'down'), (2.0, 'down'), (1.5, 'down')]
         for bed in (lambda u, b: False, lambda u, b: True, self.bed):
-            plan = spoutedbed.Schedule(step=0.5, stop=1.5, rise_from=2.0, top=3.0,
+            plan = spoutingloop.Schedule(step=0.5, stop=1.5, rise_from=2.0, top=3.0,
                                        full_loop=True)
             self.assertEqual(self.schedule(bed, plan), expected)
 
     def test_an_intermittent_break_through_must_be_confirmed(self):
         # spouts at 1.2 once, not at 1.3: the branch keeps rising
-        plan = spoutedbed.Schedule(step=0.1, stop=0.8, rise_from=1.1, top=3.0)
+        plan = spoutingloop.Schedule(step=0.1, stop=0.8, rise_from=1.1, top=3.0)
         steps = self.schedule(lambda u, b: u >= 1.4 or abs(u - 1.2) < 1e-9, plan)
         self.assertEqual(steps[:5], [(1.1, 'packed'), (1.2, 'packed'), (1.3, 'packed'),
                                      (1.4, 'packed'), (1.5, 'packed')])
         self.assertEqual(steps[5], (1.4, 'down'))
 
     def test_spin_up_start_lowers_from_start_as_before(self):
-        plan = spoutedbed.Schedule(step=0.1, stop=0.8, start=1.5, up=True)
+        plan = spoutingloop.Schedule(step=0.1, stop=0.8, start=1.5, up=True)
         self.assertEqual(self.schedule(self.bed, plan),
                          [(1.5, 'down'), (1.4, 'down'), (1.3, 'down'), (1.2, 'down'),
                           (1.1, 'down'), (1.0, 'down'), (0.9, 'down'),
                           (1.0, 'up'), (1.1, 'up'), (1.2, 'up'), (1.3, 'up')])
 
     def test_a_spout_that_never_collapses_runs_down_to_stop(self):
-        plan = spoutedbed.Schedule(step=0.1, stop=0.8, start=1.5)
+        plan = spoutingloop.Schedule(step=0.1, stop=0.8, start=1.5)
         self.assertEqual(self.schedule(lambda u, b: True, plan)[-1], (0.8, 'down'))
 
     def test_a_large_confirm_runs_the_full_loop(self):
-        plan = spoutedbed.Schedule(step=0.1, stop=0.8, start=1.5, up=True, confirm=100)
+        plan = spoutingloop.Schedule(step=0.1, stop=0.8, start=1.5, up=True, confirm=100)
         steps = self.schedule(self.bed, plan)
         self.assertEqual((steps[7], steps[-1], len(steps)), ((0.8, 'down'), (1.5, 'up'), 15))
 
     def test_a_schedule_needs_one_way_to_begin(self):
         with self.assertRaises(ValueError):
-            spoutedbed.Schedule(step=0.1, stop=0.8)
+            spoutingloop.Schedule(step=0.1, stop=0.8)
         with self.assertRaises(ValueError):
-            spoutedbed.Schedule(step=0.1, stop=0.8, start=1.5, rise_from=1.0, top=2.0)
+            spoutingloop.Schedule(step=0.1, stop=0.8, start=1.5, rise_from=1.0, top=2.0)
         with self.assertRaises(ValueError):
-            spoutedbed.Schedule(step=0.1, stop=0.8, rise_from=2.0, top=1.5)
+            spoutingloop.Schedule(step=0.1, stop=0.8, rise_from=2.0, top=1.5)
 
 
 class ProfileFeatures(unittest.TestCase):
@@ -273,7 +279,7 @@ class ProfileFeatures(unittest.TestCase):
         spout = self.spout(lambda h, y: 3.0 - 0.1 * h)
         down = self.downcomer(lambda h, y: 0.05 - 0.002 * h if abs(y) < 2
                               else (0.01 + 0.0005 * h if abs(y) > 8 else 0.03 - 0.001 * h))
-        found = spoutedbed.profile_features(spout, down)
+        found = profilefeatures.profile_features(spout, down)
         self.assertEqual([f[3] for f in found], [True, True, True, True])
         name, low, high, _ = found[0]
         # spout mean over z/R_d < 12 (5.873, 8.637, 11.4) and above
@@ -283,7 +289,7 @@ class ProfileFeatures(unittest.TestCase):
     def test_opposite_trends_are_reported_as_missing(self):
         spout = self.spout(lambda h, y: 1.0 + 0.1 * h)
         down = self.downcomer(lambda h, y: 0.01 + 0.001 * h if abs(y) < 8 else 0.05 - 0.001 * h)
-        self.assertEqual([f[3] for f in spoutedbed.profile_features(spout, down)],
+        self.assertEqual([f[3] for f in profilefeatures.profile_features(spout, down)],
                          [False, False, False, False])
 
     def test_next_to_the_walls_is_read_at_the_walls_not_at_the_slanting_base(self):
@@ -295,7 +301,7 @@ class ProfileFeatures(unittest.TestCase):
         down = [(h, y, 0.001 * h + (0.03 if abs(y) < 5 else 0.0), 0.4)
                 for h in self.heights for y in (-8.6, -7, -5, -3, -1.4, 1.4, 3, 5, 7, 8.6)
                 if abs(y) <= extent(h)]
-        wall = spoutedbed.profile_features(self.spout(lambda h, y: 1.0), down)[3]
+        wall = profilefeatures.profile_features(self.spout(lambda h, y: 1.0), down)[3]
         self.assertTrue(wall[3])
         # |y| >= 6.6 is reached from z/R_d = 11.4 up; lower down it is the base
         self.assertAlmostEqual(wall[1], 0.001 * 11.4)
@@ -304,12 +310,12 @@ class ProfileFeatures(unittest.TestCase):
     def test_a_region_without_cells_decides_nothing(self):
         down = [r for r in self.downcomer(lambda h, y: 0.01 + 0.001 * h if abs(y) > 8 else 0.02)
                 if r[0] > 12 or abs(r[1]) < 8]
-        self.assertFalse(spoutedbed.profile_features(self.spout(lambda h, y: 1.0), down)[3][3])
+        self.assertFalse(profilefeatures.profile_features(self.spout(lambda h, y: 1.0), down)[3][3])
 
     def test_nan_cells_are_skipped(self):
         spout = self.spout(lambda h, y: float('nan') if y > 0.5 else 2.0 - 0.1 * h)
         down = self.downcomer(lambda h, y: 0.05 - 0.001 * h)
-        self.assertTrue(spoutedbed.profile_features(spout, down)[0][3])
+        self.assertTrue(profilefeatures.profile_features(spout, down)[0][3])
 
 
 if __name__ == '__main__':

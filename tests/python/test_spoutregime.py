@@ -8,12 +8,10 @@ draft plates and without them (plates no), in the case's own geometry."""
 import math
 import os
 import random
-import sys
 import unittest
 
-sys.path.insert(0, os.path.join(os.environ.get('SPOUTLAB_DIR', '../..'), 'etc', 'python'))
-from spoutlab import spoutedbed  # noqa: E402
-from spoutlab import spoutregime as sr  # noqa: E402
+from spoutlab import spoutedbed
+from spoutlab import spoutregime as sr
 
 CASE = os.path.join(os.path.dirname(__file__), '..', '..', 'openfoam_cases', 'spoutDraftPlates')
 R = 0.004                      # particle radius [m]

@@ -2,12 +2,9 @@
 hand, Crank's series in its limits, and the calibration recovering a known
 Arrhenius law from curves made with it."""
 import math
-import os
-import sys
 import unittest
 
-sys.path.insert(0, os.path.join(os.environ.get('SPOUTLAB_DIR', '../..'), 'etc', 'python'))
-from spoutlab import thinlayer as tl  # noqa: E402
+from spoutlab import thinlayer as tl
 
 
 class Thompson(unittest.TestCase):

@@ -14,9 +14,8 @@ import sys
 import tempfile
 import unittest
 
-sys.path.insert(0, os.path.join(os.environ.get('SPOUTLAB_DIR', '../..'), 'etc', 'python'))
-from spoutlab import mixing  # noqa: E402
-from spoutlab import casefiles as sc  # noqa: E402
+from spoutlab import mixing
+from spoutlab import casefiles as sc
 
 COUNT = 5000
 

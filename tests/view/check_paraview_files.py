@@ -24,9 +24,8 @@ import subprocess
 import sys
 
 TOP = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..')
-sys.path.insert(0, os.path.join(TOP, 'etc', 'paraview'))
-from vtkreaders import (XML_READERS, OpenFoamCase, ReadError, read_collection,  # noqa: E402
-                        read_xml)
+from spoutlab.vtkreaders import (XML_READERS, OpenFoamCase, ReadError, read_collection,
+                                 read_xml)
 
 import numpy  # noqa: E402
 from vtkmodules.vtkCommonDataModel import vtkDataObjectTreeIterator  # noqa: E402

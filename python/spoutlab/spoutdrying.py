@@ -15,7 +15,7 @@ import os
 from spoutlab import casefiles as sc
 from spoutlab import foamfile
 from spoutlab import heatcorrelations as hc
-from spoutlab import spoutedbed
+from spoutlab import bedmaps
 from spoutlab import spoutheat
 
 
@@ -78,13 +78,13 @@ def pictures(g, names, X0, case='.'):
         if os.path.isfile(vtp):
             X = sc.read_vtp_array(vtp, 'moisture')
             png = 'particleMoisture_%s.png' % name
-            spoutedbed.snapshot(g, vtp, png, 'particles, t = %s s' % name, field='moisture',
+            bedmaps.snapshot(g, vtp, png, 'particles, t = %s s' % name, field='moisture',
                                 vmin=min(X), vmax=X0, label='moisture X [kg/kg dry solid]')
             drawn.append(png)
         rh = os.path.join(case, name, 'RH')
         if os.path.isfile(rh):
             png = 'gasHumidity_%s.png' % name
-            spoutedbed.field_map(g, centres, foamfile.read_field(rh), png, 'gas, t = %s s' % name,
+            bedmaps.field_map(g, centres, foamfile.read_field(rh), png, 'gas, t = %s s' % name,
                                  'relative humidity', 0.0, 1.0)
             drawn.append(png)
     return drawn

@@ -154,6 +154,28 @@ class VtkXmlFile:
         return b''.join(out)
 
 
+def particle_files(case='.'):
+    """[(time, path)] of a case's particle files, particles/particles_<time>.vtp,
+    by time (empty without any): the one list of them every reader takes."""
+    folder = os.path.join(case, 'particles')
+    out = []
+    if os.path.isdir(folder):
+        for f in os.listdir(folder):
+            m = re.match(r'^particles_(.+)\.vtp$', f)
+            if m:
+                try:
+                    out.append((float(m.group(1)), os.path.join(folder, f)))
+                except ValueError:
+                    pass
+    return sorted(out)
+
+
+def time_name(path):
+    """The time of a particle file as its name writes it: '0.0501' of
+    particles/particles_0.0501.vtp."""
+    return os.path.basename(path)[len('particles_'):-len('.vtp')]
+
+
 def read_vtp_points(path):
     """Particle positions from a spoutFoam .vtp file, as [(x, y, z)]."""
     return VtkXmlFile(path).points()

@@ -12,6 +12,7 @@ sections whose runs it is given and keeps the others (likewise the rows of
 results.csv, by section).
 """
 import csv
+import json
 import os
 import math
 import re
@@ -19,8 +20,22 @@ import shutil
 import sys
 
 from spoutlab import cli
-from spoutlab import spoutedbed
+from spoutlab import profilefeatures
 from spoutlab.protocols import mixing as mixing_protocol
+
+
+def read_json(case, name, remedy):
+    """A protocol's numbers, NAME in the case copy it ran in; one line if
+    they are not there (a run from before the protocols wrote them): what
+    the file is missing for and REMEDY, the command that writes it again
+    from the finished runs."""
+    path = os.path.join(case, name)
+    try:
+        with open(path) as f:
+            return json.load(f)
+    except (OSError, ValueError) as e:
+        sys.exit('results: %s: %s (%s in that case writes it from its finished runs)'
+                 % (path, e.strerror if isinstance(e, OSError) else 'not JSON: %s' % e, remedy))
 
 
 def wall_time(case):
@@ -44,47 +59,39 @@ def wall_time(case):
 
 
 class UmsRun:
-    """What protocols/minimumSpouting wrote in a case (ums.txt, ums.csv)."""
+    """What protocols/minimumSpouting wrote in a case: its numbers (ums.json)
+    and its steps (ums.csv)."""
 
     def __init__(self, case):
         self.case = case
-        text = open(os.path.join(case, 'ums.txt')).read()
-        head = re.match(r'minimum spouting velocity protocol \((\d+) particles, settled bed '
-                        r'([\d.]+) m(?:, (no draft plates|draft plates))?\)', text)
-        self.particles, self.bed = int(head.group(1)), float(head.group(2))
-        self.plates = head.group(3) != 'no draft plates'
-        self.settings = '; '.join(text.splitlines()[:2])
+        r = read_json(case, 'ums.json', 'protocols/minimumSpouting --report with its options')
+        self.particles, self.bed, self.plates = r['particles'], r['bed_height_m'], r['plates']
+        self.settings = r['settings']
         self.hours = wall_time(case) / 3600
         rows = [r.strip().split(',') for r in list(open(os.path.join(case, 'ums.csv')))[1:]]
         self.steps = [(float(r[0]), r[1], float(r[2]), r[4] == '1' if len(r) > 4 else None)
                       for r in rows]
         self.max_u = max(u for u, b, _, _ in self.steps if b != 'spinup')
-        # the classifier's window-mean core per step, from the table
-        self.cores = [(float(m.group(1)), m.group(2), float(m.group(3)))
-                      for m in re.finditer(r'^ +([\d.]+) +(\w+) +-?\d+ +\S+ +(?:yes|no) +.*?'
-                                           r'core ([\d.]+|inf) of the annulus', text, re.M)]
+        # the classifier's window-mean core per step
+        self.cores = [tuple(c) for c in r['cores']]
         self.spouts = any(s for _, b, _, s in self.steps if b != 'spinup')
-
-        def number(pattern, group=1):
-            m = re.search(pattern, text)
-            return float(m.group(group)) if m else None
-        m = re.search(r'u_ms (=|<=) ([\d.]+) m/s, dP_ms = ([\d.]+) Pa', text)
-        self.u_ms_bound = m.group(1) == '<=' if m else None
-        self.u_ms = float(m.group(2)) if m else None
-        self.dp_ms = float(m.group(3)) if m else None
-        m = re.search(r'u_ms by dP alone = ([\d.]+) m/s, dP_ms = ([\d.]+) Pa', text)
-        self.rise = (float(m.group(1)), float(m.group(2))) if m else None
-        self.peak = (number(r'dP peaks at (\d+) Pa'), number(r'dP peaks at \d+ Pa at ([\d.]+)'))
-        if self.peak[0] is None:
-            self.peak = (number(r'peak dP (\d+) Pa'), number(r'peak dP \d+ Pa at ([\d.]+)'))
-        self.break_through = number(r'breaks through at ([\d.]+) m/s')
-        self.hysteresis = number(r'hysteresis = (-?\d+) Pa')
-        self.reforms = re.search(r'spouts again at ([\d.]+) m/s, dP (\d+) Pa', text)
-        self.umf = number(r"Ergun's u_mf: ([\d.]+) m/s")
-        self.umf_eps = (number(r"m/s at the settled bed's voidage ([\d.]+)"),
-                        number(r"; ([\d.]+) m/s at the settled bed's voidage"))
-        self.kudra = number(r"eq 12 scaled to this geometry and bed height: ([\d.]+)")
-        self.kudra_direct = number(r"evaluated directly: ([\d.]+)")
+        ms = r.get('u_ms')
+        self.u_ms_bound = ms['bound'] if ms else None
+        self.u_ms = ms['u_m_s'] if ms else None
+        self.dp_ms = ms['dP_Pa'] if ms else None
+        rise = r.get('u_ms_by_dP')
+        self.rise = (rise['u_m_s'], rise['dP_Pa']) if rise else None
+        peak = r.get('peak')
+        self.peak = (peak['dP_Pa'], peak['u_m_s']) if peak else (None, None)
+        self.break_through = r.get('break_through_m_s')
+        self.hysteresis = r.get('hysteresis_Pa')
+        back = r.get('reforms')
+        self.reforms = (back['u_m_s'], back['dP_Pa']) if back else None
+        self.umf = r['u_mf_ergun_m_s']
+        self.umf_eps = (r['u_mf_settled']['voidage'], r['u_mf_settled']['u_m_s'])
+        kudra = r.get('kudra_m_s')
+        self.kudra = kudra['scaled'] if kudra else None
+        self.kudra_direct = kudra['direct'] if kudra else None
 
     def row(self, quantity, value, paper):
         return (quantity, value, paper, self.settings, '%.2f h' % self.hours)
@@ -104,8 +111,8 @@ class UmsRun:
                                  '%.2f kPa' % (self.hysteresis / 1000),
                                  'a loop (Fig 2; its size is not given)'))
         if self.reforms:
-            rows.append(self.row('spout re-forms on rising again', '%s m/s (dP %.2f kPa)'
-                                 % (self.reforms.group(1), float(self.reforms.group(2)) / 1000),
+            rows.append(self.row('spout re-forms on rising again', '%.3f m/s (dP %.2f kPa)'
+                                 % (self.reforms[0], self.reforms[1] / 1000),
                                  'above u_ms (hysteresis loop, Fig 2)'))
         return rows
 
@@ -238,26 +245,20 @@ MAP_FEATURES = {
 def maps_section(case):
     """The velocity maps (protocols/velocityMaps' maps.txt): a row per
     feature and run, the maps and profiles as figures."""
-    text = open(os.path.join(case, 'maps.txt')).read()
-    settings = text.splitlines()[0]
-    rows, figures, label = [], [], None
-    for line in text.splitlines()[1:]:
-        m = re.match(r'(noplates_n(\d+)_u([\d.]+)): .*settled bed ([\d.]+) m', line)
-        if m:
-            label, n, u = m.group(1), int(m.group(2)), m.group(3)
-            hours = wall_time(os.path.join(case, 'runs', label)) / 3600
-            paper = '%g m' % NOPLATE_BEDS[n] if n in NOPLATE_BEDS else ''
-            rows.append(('settled bed, %d particles' % n, '%s m' % m.group(4), paper, settings,
-                         '%.2f h' % hours))
-            continue
-        m = re.match(r'\s+(.+?)\s+(yes|NO): (.*)$', line)
-        if m and label:
-            rows.append(('%s (%d particles, u_s = %s m/s)' % (m.group(1), n, u),
-                         '%s: %s' % (m.group(2), m.group(3)), MAP_FEATURES.get(m.group(1), ''),
-                         settings, '%.2f h' % hours))
-        m = re.match(r'\s+pictures: (.*)$', line)
-        if m:
-            figures += [(f, 'noplates_' + f) for f in m.group(1).split()]
+    maps = read_json(case, 'maps.json', 'protocols/velocityMaps with its options')
+    settings = maps['settings']
+    rows, figures = [], []
+    for run in maps['runs']:
+        label, n, u = run['label'], run['particles'], '%g' % run['u_m_s']
+        hours = wall_time(os.path.join(case, 'runs', label)) / 3600
+        paper = '%g m' % NOPLATE_BEDS[n] if n in NOPLATE_BEDS else ''
+        rows.append(('settled bed, %d particles' % n, '%.3f m' % run['bed_height_m'], paper,
+                     settings, '%.2f h' % hours))
+        for f in run['features']:
+            rows.append(('%s (%d particles, u_s = %s m/s)' % (f['feature'], n, u),
+                         '%s: %s' % ('yes' if f['holds'] else 'NO', f['measured']),
+                         MAP_FEATURES.get(f['feature'], ''), settings, '%.2f h' % hours))
+        figures += [(f, 'noplates_' + f) for f in run['pictures']]
     return rows, [], figures
 
 
@@ -282,36 +283,33 @@ def mixing_section(case):
     (--time) get keys ending in _t<time>, and the figures of a case copy
     that holds only such runs end so too, so that a longer run can stand
     beside the default ones."""
-    lines = open(os.path.join(case, 'mixing.txt')).read().splitlines()
-    settings = lines[0].lstrip('# ')
+    numbers = read_json(case, 'mixing.json', 'protocols/mixing')
+    settings = numbers['settings']
     rows, keys, figures = [], [], []
     times = set()
-    for line in lines[1:]:
-        m = re.match(r'(mix_(no)?plates_n(\d+)_u([\d.]+)): [^:]*, ([\d.]+) s: M_final ([\d.-]+) '
-                     r'\(papers, left-right\), Lacey ([\d.-]+); lower-upper ([\d.-]+), Lacey '
-                     r'([\d.-]+);.*?snapshots: (.*)$', line)
-        if not m:
-            continue
-        label, vessel = m.group(1), 'no-plates' if m.group(2) else 'plates'
-        n, u, t_run = int(m.group(3)), float(m.group(4)), m.group(5)
+    for r in numbers['runs']:
+        label, vessel = r['label'], r['vessel']
+        n, u, t_run = r['particles'], r['u_m_s'], '%.3g' % r['time_s']
+        M = tuple('%.3f' % r[k] for k in ('M_papers_left_right', 'M_lacey_left_right',
+                                           'M_papers_lower_upper', 'M_lacey_lower_upper'))
         times.add(float(t_run))
         tag = '' if float(t_run) == mixing_protocol.DEFAULT_TIME else '_t%g' % float(t_run)
         paper = mixing_paper(vessel, n, u)
         hours = wall_time(os.path.join(case, 'runs', label)) / 3600
         rows.append(('M_final, %s, %d particles, u_s = %.1f m/s' % (
             'no draft plates' if vessel == 'no-plates' else 'draft plates', n, u),
-            '%s (Lacey %s; lower-upper %s, Lacey %s)' % m.group(6, 7, 8, 9), paper,
+            '%s (Lacey %s; lower-upper %s, Lacey %s)' % M, paper,
             '%s; %s s' % (settings, t_run), '%.2f h' % hours))
         bed = 'mixing%dk' % round(n / 1000) if vessel == 'no-plates' \
             else 'mixingDraft%dk' % round(n / 1000)
         key = ('%s.M_final' % bed if (vessel, n, u) == ('no-plates', 10000, 2.0)
                else '%s.M_final_u%.1f' % (bed, u)) + tag
-        keys.append((key, m.group(6), '', paper.split(' ')[0] if paper[:1].isdigit() else '',
+        keys.append((key, M[0], '', paper.split(' ')[0] if paper[:1].isdigit() else '',
                      'papers\' M, left-right halves; %s; %s s at %.1f m/s; Lacey %s' % (
-                         settings, t_run, u, m.group(7))))
+                         settings, t_run, u, M[1])))
         if (vessel, n, u) in KEY_MIXING_POINTS:
             # the labels at the end of the run (Figs 8-9 by colour)
-            last = [f for f in m.group(10).split() if f.endswith('_label.png')][-1:]
+            last = [f for f in r['snapshots'] if f.endswith('_label.png')][-1:]
             figures += [(f, 'mixing_' + f) for f in last]
     beds = sorted({f for f in os.listdir(case) if re.match(r'mixing_\w+_n\d+\.png$', f)})
     tag = '_t%g' % min(times) if times and mixing_protocol.DEFAULT_TIME not in times else ''
@@ -324,18 +322,16 @@ KEY_MIXING_POINTS = (('no-plates', 10000, 2.0), ('no-plates', 26000, 2.5),
 
 
 def profile_rows(case):
-    path = os.path.join(case, 'profiles.txt')
-    if not os.path.isfile(path):
+    """The profiles protocol's features (profiles.json), a row each."""
+    if not os.path.isfile(os.path.join(case, 'profiles.txt')):
         return []
-    rows, u = [], None
-    for line in open(path):
-        m = re.match(r'u_s = ([\d.]+) m/s', line)
-        if m:
-            u = m.group(1)
-        m = re.match(r'\s+(.+?)\s+lower (\S+) m/s, upper (\S+) m/s: (yes|NO)', line)
-        if m:
-            rows.append(('%s (u_s = %s m/s)' % (m.group(1), u),
-                         '%s: lower %s, upper %s m/s' % (m.group(4), m.group(2), m.group(3)),
+    rows = []
+    for point in read_json(case, 'profiles.json', 'protocols/profiles with its options')['points']:
+        u = '%g' % point['u_m_s']
+        for f in point['features']:
+            rows.append(('%s (u_s = %s m/s)' % (f['feature'], u),
+                         '%s: lower %.3f, upper %.3f m/s' % ('yes' if f['holds'] else 'NO',
+                                                              f['lower_m_s'], f['upper_m_s']),
                          'yes (Figs 4a, 5)', 'profiles protocol; lower region z/R_d < 12',
                          '%.2f h' % (wall_time(os.path.join(case, 'runs', 'He95_u%s' % u))
                                      / 3600)))
@@ -354,7 +350,7 @@ def spout_height_rows(case, u_ms):
         if not (label.startswith('He95_u') or label.startswith('mu0.3_u')) \
                 or not os.path.isfile(path):
             continue
-        series = spoutedbed.by_height(spoutedbed.read_profile(path))
+        series = profilefeatures.by_height(profilefeatures.read_profile(path))
         u = label.split('_u')[1]
         (z_top, v_top), (z_end, v_end) = max(series, key=lambda hv: hv[1]), series[-1]
         rows.append(('spout velocity along the height, %s' % label,
@@ -373,10 +369,10 @@ def fig3_velocities(ums):
     decreasing branch, u_ms and the step that collapsed the spout."""
     down = [float(r.split(',')[0]) for r in list(open(os.path.join(ums, 'ums.csv')))[1:]
             if r.split(',')[1] == 'down']
-    m = re.search(r'u_ms = ([\d.]+) m/s', open(os.path.join(ums, 'ums.txt')).read())
+    r = UmsRun(ums)
     picked = {down[0], down[-1]}
-    if m:
-        k = min(range(len(down)), key=lambda i: abs(down[i] - float(m.group(1))))
+    if r.u_ms is not None and not r.u_ms_bound:
+        k = min(range(len(down)), key=lambda i: abs(down[i] - r.u_ms))
         picked.update(down[k:k + 2])
     return sorted(picked, reverse=True)
 
@@ -402,27 +398,24 @@ def circulation_rows(case, study):
     friction study, the fitted slope."""
     rows, points, slope = [], [], None
     for _ in (study,):
-        path = os.path.join(case, 'circulation_%s.txt' % study)
-        if not os.path.isfile(path):
+        if not os.path.isfile(os.path.join(case, 'circulation_%s.txt' % study)):
             continue
-        mus, logs, how = [], [], ''
-        for line in open(path):
-            if line.startswith('#'):
-                how = line[1:].strip()
-                continue
-            label = line.split()[0]
-            m = re.search(r'u_s = ([\d.]+) m/s\s+W_s = ([\d.]+) kg/s\s+correlation ([\d.]+)', line)
-            ws, ref = float(m.group(2)), float(m.group(3))
+        mus, logs = [], []
+        table = read_json(case, 'circulation_%s.json' % study,
+                          'protocols/circulation %s with its options' % study)
+        how = table['settings']
+        for p in table['points']:
+            label, ws, ref = p['label'], p['W_s_kg_s'], p['correlation_kg_s']
             points.append((label, ws, ref))
             rows.append(('W_s, %s' % label, '%.3f kg/s (%+.0f %%)' % (ws, 100 * (ws / ref - 1)),
                          '%.3f kg/s (eq %s)' % (ref, '15' if study == 'velocity' else '16'),
-                         'u_s = %s m/s; %s' % (m.group(1), how),
+                         'u_s = %.2f m/s; %s' % (p['u_m_s'], how),
                          '%.2f h' % (wall_time(os.path.join(case, 'runs', label)) / 3600)))
             if study == 'friction' and ws > 0:
                 mus.append(float(label[2:label.index('_')]))
                 logs.append(math.log10(ws))
         if len(mus) > 1:
-            slope = spoutedbed.slope(mus, logs)
+            slope = profilefeatures.slope(mus, logs)
             rows.append(('d log10 W_s / d mu', '%.2f' % slope, '-3.25 (eq 16)',
                          'least squares over the friction runs', ''))
     return rows, points, slope
@@ -475,8 +468,7 @@ def heat_section(case):
 def drying_section(case):
     """The dryer from protocols/drying's drying.json: the single-kernel checks
     and the bed."""
-    import json
-    r = json.load(open(os.path.join(case, 'drying.json')))
+    r = read_json(case, 'drying.json', 'protocols/drying with its options')
     k, b = r.get('kernel', {}), r.get('bed')
     rows, keys = [], []
     if 'wetBulb' in k:
@@ -586,13 +578,13 @@ def build(ums, circ, heat, figure_dir, noplates=(), maps=None, mixing=(), drying
 
     if ums:
         rows, u_ms = ums_rows(ums)
-        m = re.search(r'dP_ms = ([\d.]+) Pa', open(os.path.join(ums, 'ums.txt')).read())
+        run = UmsRun(ums)
         keys = []
         if u_ms:
             keys = [('draft.u_ms_m_s', '%.4g' % u_ms, 'm/s', '1.25', rows[0][3]),
-                    ('draft.dP_ms_kPa', '%.4g' % (float(m.group(1)) / 1000), 'kPa', '1.40',
+                    ('draft.dP_ms_kPa', '%.4g' % (run.dp_ms / 1000), 'kPa', '1.40',
                      rows[0][3])]
-        loop = UmsRun(ums).hysteresis
+        loop = run.hysteresis
         if loop is not None:
             keys.append(('draft.hysteresis_kPa', '%.4g' % (loop / 1000), 'kPa', '',
                          'peak of the increasing branch from the packed bed minus the '
@@ -634,7 +626,7 @@ def build(ums, circ, heat, figure_dir, noplates=(), maps=None, mixing=(), drying
         name, rows, keys, pngs = noplates_section(case)
         if name not in FIGURES:
             sys.exit('results: %s: %s has no section (expected 10 000 or 26 000 particles)'
-                     % (os.path.join(case, 'ums.txt'), name))
+                     % (os.path.join(case, 'ums.json'), name))
         new[name] = (rows, keys, figures(name, case, pngs))
     if maps:
         rows, keys, pngs = maps_section(maps)
@@ -685,7 +677,7 @@ def write_csv(path, new):
 def parse(argv):
     p = cli.parser('results', __doc__)
     p.add_argument('cases', nargs='*', metavar='CASE_DIR',
-                   help='UMS_DIR, a case copy where protocols/minimumSpouting ran (ums.txt, '
+                   help='UMS_DIR, a case copy where protocols/minimumSpouting ran (ums.json, '
                         'ums.csv), then CIRCULATION_DIR, one where protocols/circulation '
                         'and profiles ran')
     p.add_argument('--heat', metavar='HEAT_DIR',

@@ -12,12 +12,13 @@ Results: profiles.txt (the paper's features, lower vs upper region) and, per
 velocity, profiles_u<u>_{spoutVelocity,spoutVoidage,downcomerVelocity}.png
 and the CSV files of the run.
 """
+import json
 import os
 import shutil
 import sys
 
 from spoutlab import cli
-from spoutlab import spoutedbed
+from spoutlab import profilefeatures
 from spoutlab.protocols import circulation as circ
 
 
@@ -38,20 +39,25 @@ def main(argv):
              'z/R_d < 12, upper region above; %g s per run, averaged over the last %g s'
              % (o['time'], o['average'])]
     settled = {}
+    numbers = []   # the features as printed, for protocols/results (profiles.json)
     for u in o['u']:
         label = 'He%g_u%g' % (He, u)
         work = circ.run_point(o, label, u, ['He=%g' % He], settled)
         for name in ('spoutVelocity', 'spoutVoidage', 'downcomerVelocity'):
             shutil.copy(os.path.join(work, name + '.png'), 'profiles_u%g_%s.png' % (u, name))
-        spout = spoutedbed.read_profile(os.path.join(work, 'spoutProfiles.csv'))
-        down = spoutedbed.read_profile(os.path.join(work, 'downcomerProfiles.csv'))
+        spout = profilefeatures.read_profile(os.path.join(work, 'spoutProfiles.csv'))
+        down = profilefeatures.read_profile(os.path.join(work, 'downcomerProfiles.csv'))
         lines.append('')
         lines.append('u_s = %g m/s (%s):' % (u, work))
-        for name, low, high, holds in spoutedbed.profile_features(spout, down):
+        features = profilefeatures.profile_features(spout, down)
+        for name, low, high, holds in features:
             lines.append('  %-58s lower %.3f m/s, upper %.3f m/s: %s'
                          % (name, low, high, 'yes' if holds else 'NO'))
+        numbers.append({'u_m_s': u, 'features': [
+            {'feature': name, 'lower_m_s': float('%.3f' % low), 'upper_m_s': float('%.3f' % high),
+             'holds': bool(holds)} for name, low, high, holds in features]})
         # where the spout stops accelerating, and how much it slows above
-        series = spoutedbed.by_height(spout)
+        series = profilefeatures.by_height(spout)
         top = max(series, key=lambda hv: hv[1])
         lines.append('  spout velocity by height (z/R_d: m/s)  '
                      + ', '.join('%.1f: %.2f' % hv for hv in series))
@@ -60,6 +66,9 @@ def main(argv):
     text = '\n'.join(lines) + '\n'
     sys.stdout.write(text)
     open('profiles.txt', 'w').write(text)
+    with open('profiles.json', 'w') as f:
+        json.dump({'points': numbers}, f, indent=1)
+        f.write('\n')
     return 0
 
 

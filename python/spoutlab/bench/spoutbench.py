@@ -7,7 +7,9 @@ import shutil
 import subprocess
 import sys
 
-REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+from spoutlab import bench
+
+REPO = bench.REPO
 CASE = os.path.join(REPO, 'openfoam_cases', 'spoutDraftPlates')
 
 
@@ -81,12 +83,12 @@ def run(source, base, ranks, end, name=None, start=None, variables=None, write=F
     script += ('foamDictionary -entry endTime -set %g system/controlDict > /dev/null && '
                'foamDictionary -entry writeInterval -set %g system/controlDict > /dev/null && '
                % (end, end if write else 10 * end))
-    if ranks == 1:
-        script += 'spoutFoam > log.spoutFoam 2>&1'
-    else:
-        script += ('decomposeSlabs %d > /dev/null && mpirun -np %d %s spoutFoam -parallel '
-                   '> log.spoutFoam 2>&1'
-                   % (ranks, ranks, '--oversubscribe' if ranks > os.cpu_count() else ''))
+    if ranks > 1:
+        script += 'decomposeSlabs %d > /dev/null && ' % ranks
+    if ranks > os.cpu_count():
+        script += 'SPOUTLAB_MPIRUN_ARGS="--oversubscribe ${SPOUTLAB_MPIRUN_ARGS:-}" '
+    # the one launch, etc/caseFunctions launchSpoutFoam
+    script += 'launchSpoutFoam %d > log.spoutFoam 2>&1' % ranks
     shell(script, case, os.path.join(case, 'log.bench'))
     return case
 

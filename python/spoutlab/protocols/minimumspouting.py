@@ -11,7 +11,7 @@ collapses and dP rises steeply; u_ms is the last step that still spouts
 step lasts --hold seconds; its pressure drop (axis probe 11 mm above the
 bottom) is averaged over the last --average seconds, and whether the bed
 spouts is the spout classifier's verdict over the particle files of that
-window (spoutlab.spoutedbed.bed_spouts).  The hysteresis is the
+window (spoutlab.spoutregime.bed_spouts).  The hysteresis is the
 increasing branch's peak dP minus the decreasing branch's dP at the same
 u_s.
 
@@ -24,16 +24,23 @@ Restart: run the same command again after an interruption; spoutFoam
 continues from the last written time (LIGGGHTS restarts are in DEM/) and
 the finished steps decide the same schedule again.  Progress is printed
 every few seconds and a line per finished step.
-Results: ums.csv, ums.png, ums.txt, snapshot_<branch>_u<u>.png.
+Results: ums.csv, ums.png, ums.txt, snapshot_<branch>_u<u>.png, and ums.json, the
+report's numbers as it prints them (read by protocols/results).
 """
+import json
+import math
 import os
 import subprocess
 import sys
 
 from spoutlab import cli
-from spoutlab import mixing
 from spoutlab import casefiles as sc
 from spoutlab import spoutedbed
+from spoutlab import bedmaps
+from spoutlab import caserun
+from spoutlab import spoutcorrelations
+from spoutlab import spoutingloop
+from spoutlab import spoutregime
 
 # the papers' simulated u_ms [m/s] and dP_ms [kPa] by vessel and particles
 PAPER = {('plates', 26000): (1.25, 1.40), ('no-plates', 10000): (2.0, 1.75)}
@@ -87,10 +94,10 @@ def options(argv):
     if o['n']:
         o['overrides'].append('nParticles=%d' % o['n'])
     if o['kick'] is not None:
-        o['schedule'] = spoutedbed.Schedule(o['step'], o['stop'], start=o['start'], up=o['up'],
+        o['schedule'] = spoutingloop.Schedule(o['step'], o['stop'], start=o['start'], up=o['up'],
                                             confirm=o['confirm'])
     else:
-        o['schedule'] = spoutedbed.Schedule(o['step'], o['stop'], rise_from=o['rise_from'],
+        o['schedule'] = spoutingloop.Schedule(o['step'], o['stop'], rise_from=o['rise_from'],
                                             top=o['top'], up=o['up'], confirm=o['confirm'],
                                             full_loop=o['full_loop'])
     return o
@@ -145,7 +152,7 @@ def evaluate(o, steps, g):
         if not dp or rows[-1][0] < t1 - 5e-3:              # the step has not finished
             break
         if (lo, t1) not in VERDICTS:       # the particle files of a finished step stay
-            VERDICTS[(lo, t1)] = spoutedbed.bed_spouts(g, '.', lo, t1)
+            VERDICTS[(lo, t1)] = spoutregime.bed_spouts(g, '.', lo, t1)
         done.append(Step(u, branch, sum(dp) / len(dp), sum(up) / len(up) if up else float('nan'),
                          t1, VERDICTS[(lo, t1)]))
     return done
@@ -154,7 +161,7 @@ def evaluate(o, steps, g):
 def snapshots(g, done):
     """Particles coloured by vertical velocity at the last particle output
     of each step: snapshot_<branch>_u<u>.png."""
-    series = mixing.particle_files('.')
+    series = sc.particle_files('.')
     names = []
     for s in done:
         shown = [(t, f) for t, f in series if t <= s.end + 1e-6]
@@ -162,7 +169,7 @@ def snapshots(g, done):
             continue
         t, f = shown[-1]
         name = 'snapshot_%s_u%g.png' % (s.branch, s.u)
-        spoutedbed.snapshot(g, f, name, 'u_s = %g m/s (%s), t = %g s' % (s.u, s.branch, t),
+        bedmaps.snapshot(g, f, name, 'u_s = %g m/s (%s), t = %g s' % (s.u, s.branch, t),
                             vmax=1.0)
         names.append(name)
     return names
@@ -170,6 +177,11 @@ def snapshots(g, done):
 
 def branch(done, name):
     return [(s.u, s.dp, s.spouts) for s in done if s.branch == name]
+
+
+def reported(fmt, value):
+    """value as the report prints it (fmt), as a number."""
+    return float(fmt % value)
 
 
 def report(o, done, g):
@@ -202,9 +214,17 @@ def report(o, done, g):
                                                    'yes' if s.spouts else 'no',
                                                    s.verdict.describe()) for s in shown]
     lines.append('')
+    # the numbers of the report as it prints them, for protocols/results (ums.json)
+    numbers = {'particles': n, 'bed_height_m': reported('%.3f', Hb), 'plates': g.plates,
+               'settings': '; '.join(lines[:2]),
+               'cores': [[reported('%.3f', s.u), s.branch, reported('%.2f', s.verdict.core_ratio)]
+                         for s in shown if s.verdict.snapshots
+                         and not math.isnan(s.verdict.core_ratio)]}
     ref = ' (paper: %g m/s, %.2f kPa)' % paper if paper else ''
     if packed:
-        u_peak, dp_peak, u_b, dp_b = spoutedbed.break_through(packed)
+        u_peak, dp_peak, u_b, dp_b = spoutingloop.break_through(packed)
+        numbers['peak'] = {'dP_Pa': reported('%.0f', dp_peak), 'u_m_s': reported('%.3f', u_peak)}
+        numbers['break_through_m_s'] = None if u_b is None else reported('%.3f', u_b)
         if u_b is None:
             lines.append('the bed does not spout at any u_s up to %.3f m/s (highest tried); '
                          'peak dP %.0f Pa at %.3f m/s' % (packed[-1][0], dp_peak, u_peak))
@@ -215,31 +235,40 @@ def report(o, done, g):
     # the hysteresis compares the rise with the steps taken on the way down;
     # u_ms is read from the whole decreasing branch, which begins at the top
     # of the rise, where the bed spouts
-    loop = spoutedbed.hysteresis(packed, down)
+    loop = spoutingloop.hysteresis(packed, down)
     if packed and down:
         down = packed[-1:] + down
-    ms = spoutedbed.minimum_spouting(down)
+    ms = spoutingloop.minimum_spouting(down)
     if ms:
+        numbers['u_ms'] = {'u_m_s': reported('%.3f', ms[0]), 'dP_Pa': reported('%.0f', ms[1]),
+                           'bound': False}
         lines.append('u_ms = %.3f m/s, dP_ms = %.0f Pa%s: at the next cut the bed stops '
                      'spouting, dP %.0f Pa (%+.0f %%)'
                      % (ms[0], ms[1], ref, ms[2], 100 * (ms[2] / ms[1] - 1)))
     elif down and down[-1][2]:
+        numbers['u_ms'] = {'u_m_s': reported('%.3f', down[-1][0]),
+                           'dP_Pa': reported('%.0f', down[-1][1]), 'bound': True}
         lines.append('u_ms <= %.3f m/s, dP_ms = %.0f Pa%s: the bed still spouted at the '
                      'lowest step: lower --stop' % (down[-1][0], down[-1][1], ref))
     elif down:
         lines.append('no u_ms: the bed did not spout on the decreasing branch')
-    rise = spoutedbed.steepest_rise(down)
+    rise = spoutingloop.steepest_rise(down)
     if rise:
+        numbers['u_ms_by_dP'] = {'u_m_s': reported('%.3f', rise[0]),
+                                 'dP_Pa': reported('%.0f', rise[1])}
         lines.append('u_ms by dP alone = %.3f m/s, dP_ms = %.0f Pa%s: the step before dP\'s '
                      'steepest rise on the decreasing branch, to %.0f Pa one step below'
                      % (rise[0], rise[1], ref, rise[2]))
     if loop is not None:
+        numbers['hysteresis_Pa'] = reported('%.0f', loop)
         lines.append('hysteresis = %.0f Pa: the increasing branch\'s peak dP minus the '
                      'decreasing branch\'s dP at %.3f m/s'
-                     % (loop, spoutedbed.break_through(packed)[0]))
-    back = spoutedbed.spout_reforms(up)
+                     % (loop, spoutingloop.break_through(packed)[0]))
+    back = spoutingloop.spout_reforms(up)
     if back:
         above = ms is not None and back[0] > ms[0] + 1e-6
+        numbers['reforms'] = {'u_m_s': reported('%.3f', back[0]),
+                              'dP_Pa': reported('%.0f', back[1])}
         lines.append('increasing u_s again: the bed spouts again at %.3f m/s, dP %.0f Pa '
                      '(%s)' % (back + ('above u_ms: a hysteresis in u_s' if above
                                        else 'not above u_ms: no hysteresis in u_s',)))
@@ -248,19 +277,28 @@ def report(o, done, g):
                      % up[-1][0])
     rho = g.gas['rho']
     p = g.particles
+    umf = spoutcorrelations.ergun_umf(p['dp'] / 1000, p['rhop'], rho, g.gas['mu'])
+    umf_eps = spoutcorrelations.ergun_umf(p['dp'] / 1000, p['rhop'], rho, g.gas['mu'], eps)
+    numbers['u_mf_ergun_m_s'] = reported('%.3f', umf)
+    numbers['u_mf_settled'] = {'voidage': reported('%.3f', eps),
+                               'u_m_s': reported('%.3f', umf_eps)}
     lines.append("Ergun's u_mf: %.3f m/s in Wen and Yu's form (the no-draft paper: 1.746 m/s); "
                  "%.3f m/s at the settled bed's voidage %.3f"
-                 % (spoutedbed.ergun_umf(p['dp'] / 1000, p['rhop'], rho, g.gas['mu']),
-                    spoutedbed.ergun_umf(p['dp'] / 1000, p['rhop'], rho, g.gas['mu'], eps), eps))
+                 % (umf, umf_eps, eps))
     if g.plates:
+        numbers['kudra_m_s'] = {'scaled': reported('%.3f', spoutcorrelations.kudra_ums(g, Hb)),
+                                'direct': reported('%.3f', spoutcorrelations.kudra_eq12(g, Hb))}
         lines.append("Kudra's eq 12 scaled to this geometry and bed height: %.3f m/s; evaluated "
                      "directly: %.3f m/s (eq 13 as the paper evaluates it: 1.20 kPa)"
-                     % (spoutedbed.kudra_ums(g, Hb), spoutedbed.kudra_eq12(g, Hb)))
+                     % (spoutcorrelations.kudra_ums(g, Hb), spoutcorrelations.kudra_eq12(g, Hb)))
     lines.append('flow patterns at the end of each step (Fig 3): '
                  + ' '.join(snapshots(g, shown)))
     text = '\n'.join(lines) + '\n'
     sys.stdout.write(text)
     open('ums.txt', 'w').write(text)
+    with open('ums.json', 'w') as f:
+        json.dump(numbers, f, indent=1)
+        f.write('\n')
     mark = (',\\\n     "<echo %g,%g" using 1:2 with points pt 9 ps 2 title "paper: u_{ms}, dP_{ms}"'
             % paper) if paper else ''
     sc.plot('ums.png', '''
@@ -281,7 +319,7 @@ def main(argv):
     # mesh and settle (skipped when continuing); the protocol reads probes
     # and particle files, not time-averaged fields
     if not o['report']:
-        spoutedbed.prepare_case(o['overrides'], 'minimumSpouting', probes_only=True)
+        caserun.prepare_case(o['overrides'], 'minimumSpouting', probes_only=True)
     elif not os.path.isfile('log.spoutFoam'):
         sys.exit('minimumSpouting: --report: no run here yet (no log.spoutFoam)')
     g = spoutedbed.load('.')
@@ -292,8 +330,8 @@ def main(argv):
         steps, end = timeline(o, speeds)
         if not o['report']:
             extend(steps, end)
-            if (spoutedbed.last_time('log.spoutFoam') or 0.0) < end - 1e-3:  # the log rounds
-                spoutedbed.run_spoutfoam(end, o['np'], 'minimumSpouting')
+            if (caserun.last_time('log.spoutFoam') or 0.0) < end - 1e-3:  # the log rounds
+                caserun.run_spoutfoam(end, o['np'], 'minimumSpouting')
         done = evaluate(o, steps, g)
         for k in range(shown, 0 if o['report'] else len(done)):
             s = done[k]

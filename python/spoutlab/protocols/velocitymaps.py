@@ -9,12 +9,14 @@ bed broken through at --kick, then u_s to --time; averages over the last
 --average seconds); finished runs are kept, so running the command again
 after an interruption continues.
 
-Results: maps.txt, maps_<label>_{gasVelocity,particleVelocity}.png (maps),
+Results: maps.txt (and maps.json, its numbers for protocols/results),
+maps_<label>_{gasVelocity,particleVelocity}.png (maps),
 maps_<label>_profiles.png and maps_<label>_profiles.csv (profiles across the
 width every 5 gas cells, 95 mm, of height up to the settled bed).
 """
 import argparse
 import concurrent.futures
+import json
 import math
 import os
 import sys
@@ -24,6 +26,8 @@ from spoutlab import cli
 
 from spoutlab import foamfile
 from spoutlab import spoutedbed
+from spoutlab import bedmaps
+from spoutlab import profilefeatures
 from spoutlab.protocols import circulation as circ
 
 # a cell holds particles in the time average when its mean solid fraction
@@ -115,7 +119,7 @@ def features(f):
         axis.append(mean([f.Vz[i] for i in row if abs(c[i][0]) * 1000 <= g.Wi / 2]))
         off.append(mean([f.Vz[i] for i in row if abs(c[i][0]) * 1000 > g.Wi / 2]))
         edge.append(mean([f.Vz[i] for i in (row[0], row[-1])]))
-    falls = len(heights) > 1 and spoutedbed.slope(heights, axis) < 0
+    falls = len(heights) > 1 and profilefeatures.slope(heights, axis) < 0
     out.append(('V_z on the axis falls with height', ', '.join(
         '%.0f mm: %.2f' % hv for hv in zip(heights, axis)) + ' m/s', falls))
     out.append(('V_z falls with the distance from the axis', 'axis %s against the rest %s m/s'
@@ -132,11 +136,11 @@ def draw(f, label, title):
     """The two maps and the profiles of one run."""
     g = f.g
     umax = max(abs(v) for v in f.Uz)
-    spoutedbed.field_map(g, f.centres, f.Uz, 'maps_%s_gasVelocity.png' % label,
+    bedmaps.field_map(g, f.centres, f.Uz, 'maps_%s_gasVelocity.png' % label,
                          'Time-averaged gas velocity U_z, %s (Fig 3)' % title,
                          'U_z [m/s]', -umax, umax, zmax=2 * f.bed)
     shown = [(c, v) for c, v in zip(f.centres, f.Vz) if not math.isnan(v)]
-    spoutedbed.field_map(g, [c for c, _ in shown], [v for _, v in shown],
+    bedmaps.field_map(g, [c for c, _ in shown], [v for _, v in shown],
                          'maps_%s_particleVelocity.png' % label,
                          'Time-averaged particle velocity V_z, %s (Fig 4)' % title,
                          'V_z [m/s]', -0.5, 0.5, zmax=2 * f.bed)
@@ -182,18 +186,27 @@ def main(argv):
     lines = ['time-averaged velocities without draft plates (no-draft paper, Figs 3-4): %g s '
              'per run (broken through at %s m/s for %s s), averaged over the last %g s'
              % ((o['time'],) + tuple(o['kick'].split(',')) + (o['average'],))]
+    runs = []      # what maps.txt says, for protocols/results (maps.json)
     for (label, n, u), work in zip(points, works):
         f = Fields(work)
         pictures = draw(f, label, '%d particles, u_s = %g m/s' % (n, u))
         lines.append('')
         lines.append('%s: %d particles, u_s = %g m/s, settled bed %.3f m (%s)'
                      % (label, n, u, f.bed, work))
-        for statement, measured, holds in features(f):
+        found = features(f)
+        for statement, measured, holds in found:
             lines.append('  %-44s %s: %s' % (statement, 'yes' if holds else 'NO', measured))
         lines.append('  pictures: ' + ' '.join(pictures))
+        runs.append({'label': label, 'particles': n, 'u_m_s': float('%g' % u),
+                     'bed_height_m': float('%.3f' % f.bed), 'pictures': pictures,
+                     'features': [{'feature': statement, 'holds': bool(holds),
+                                   'measured': measured} for statement, measured, holds in found]})
     text = '\n'.join(lines) + '\n'
     sys.stdout.write(text)
     open('maps.txt', 'w').write(text)
+    with open('maps.json', 'w') as out:
+        json.dump({'settings': lines[0], 'runs': runs}, out, indent=1)
+        out.write('\n')
     return 0
 
 

@@ -19,7 +19,7 @@ import os
 from spoutlab import heatcorrelations as hc
 from spoutlab import casefiles as sc
 from spoutlab import foamfile
-from spoutlab import spoutedbed
+from spoutlab import bedmaps
 
 BAND = (16.927, 22.454)   # z/R_d of Fig 12
 
@@ -38,9 +38,8 @@ def write_times(case='.'):
 
 
 def vtp_times(case='.'):
-    names = [f[len('particles_'):-4] for f in os.listdir(os.path.join(case, 'particles'))
-             if f.startswith('particles_') and f.endswith('.vtp')]
-    return sorted((float(n), n) for n in names)
+    """[(time, name as written)] of the particle files."""
+    return [(t, sc.time_name(path)) for t, path in sc.particle_files(case)]
 
 
 def particle_history(g, case='.'):
@@ -191,12 +190,12 @@ def snapshots(g, names, case='.'):
     for name in names:
         if name in vtps:
             png = 'particleTemperature_%s.png' % name
-            spoutedbed.snapshot(g, vtps[name], png, 'particles, t = %s s' % name,
+            bedmaps.snapshot(g, vtps[name], png, 'particles, t = %s s' % name,
                                 field='temperature', vmin=g.T0, vmax=math.ceil(hottest),
                                 label='particle temperature [K]')
             pictures.append(png)
         png = 'gasTemperature_%s.png' % name
-        spoutedbed.field_map(g, centres, foamfile.read_field(os.path.join(case, name, 'T')), png,
+        bedmaps.field_map(g, centres, foamfile.read_field(os.path.join(case, name, 'T')), png,
                              'gas, t = %s s' % name, 'gas temperature [K]', g.T0, g.Tin)
         pictures.append(png)
     return pictures

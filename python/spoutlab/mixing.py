@@ -56,7 +56,6 @@ mixingCellSize.csv; and postProcessing/mixingParticles/ (see write_labelled).
 """
 import math
 import os
-import re
 import sys
 
 from spoutlab import casefiles as sc
@@ -166,21 +165,6 @@ def mixing_index(ids, points, labels, grid, min_count=DEFAULT_MIN_COUNT,
 
 # --- the particle files of a case ------------------------------------------------
 
-def particle_files(case):
-    """[(time, path)] of the case's particles/particles_<time>.vtp, by time."""
-    folder = os.path.join(case, 'particles')
-    out = []
-    if os.path.isdir(folder):
-        for f in os.listdir(folder):
-            m = re.match(r'^particles_(.+)\.vtp$', f)
-            if m:
-                try:
-                    out.append((float(m.group(1)), os.path.join(folder, f)))
-                except ValueError:
-                    pass
-    return sorted(out)
-
-
 def read_particles(path):
     """(ids, points) of one particle file."""
     ids = [int(v) for v in sc.read_vtp_array(path, 'id')]
@@ -231,7 +215,7 @@ def evaluate_case(case, splits, cell, min_count, weighting, write_vtp=True,
                   scan=False, plot=True):
     """Writes mixing.csv (and the rest) for a case; returns the rows
     [(time, {split: MixingIndex})]."""
-    files = particle_files(case)
+    files = sc.particle_files(case)
     if not files:
         raise SystemExit('mixing: %s: no particle files particles/particles_<time>.vtp'
                          % os.path.join(case, 'particles'))

@@ -25,6 +25,7 @@ import time
 from spoutlab import cli
 from spoutlab import foamfile
 from spoutlab import spoutedbed
+from spoutlab import caserun
 from spoutlab import spoutheat
 
 PAPER = {'Re_spout': 5690, 'Re_downcomer': 130}
@@ -77,15 +78,15 @@ def run(o, work, name='heatTransfer', extra=()):
     try:
         overrides = (['heat=yes'] + list(extra) + o['overrides']
                      + (['nParticles=%d' % o['n']] if o['n'] else []))
-        spoutedbed.prepare_case(overrides, name)
+        caserun.prepare_case(overrides, name)
         subprocess.check_call(['./inletVelocity', '%g' % o['u']])
         setting('endTime', '%g' % o['time'])
         dt = foamfile.scalar('system/controlDict', 'deltaT')
         setting('writeInterval', '%.10g' % (max(1, round(o['write'] / dt)) * dt))
         setting('functions.averages.timeStart', '%g' % (o['time'] - o['average']))
-        if (spoutedbed.last_time('log.spoutFoam') or 0.0) < o['time'] - 1e-3:
+        if (caserun.last_time('log.spoutFoam') or 0.0) < o['time'] - 1e-3:
             t0 = time.time()
-            spoutedbed.run_spoutfoam(o['time'], o['np'], name)
+            caserun.run_spoutfoam(o['time'], o['np'], name)
             with open('log.wallTime', 'a') as f:
                 f.write('%.0f\n' % (time.time() - t0))
         with open('log.evaluate', 'w') as log:

@@ -13,7 +13,8 @@ finished runs are kept, so running the command again after an interruption
 continues, and several invocations on different points may run side by
 side.
 
-Results: mixing.txt (every finished run), mixing.csv, and a figure per bed,
+Results: mixing.txt (every finished run; mixing.json, its numbers for
+protocols/results), mixing.csv, and a figure per bed,
 mixing_<vessel>_n<N>.png (M_papers and M_Lacey, left-right, against time);
 snapshots like the draft-plate paper's Figs 8-9 per run,
 snapshot_<run>_t<t>_{velocity,label}.png: the particles coloured by their
@@ -23,6 +24,7 @@ postProcessing/mixingParticles/particles.pvd (arrays label_left-right,
 label_lower-upper).
 """
 import argparse
+import json
 import os
 import re
 import sys
@@ -31,6 +33,7 @@ from spoutlab import casefiles as sc
 from spoutlab import cli
 from spoutlab import mixing
 from spoutlab import spoutedbed
+from spoutlab import bedmaps
 from spoutlab.protocols import circulation
 
 # draft-plate paper Fig 10a/b and no-draft paper Fig 6 (26 000 at 2.0 m/s),
@@ -114,7 +117,7 @@ class Run:
         g = spoutedbed.load(self.work)
         labelled = os.path.join(self.work, mixing.LABELLED_DIR)
         files = [(t, os.path.join(labelled, os.path.basename(path)))
-                 for t, path in mixing.particle_files(self.work)]
+                 for t, path in sc.particle_files(self.work)]
         names = []
         shown = {min(files, key=lambda f: abs(f[0] - want)) for want in (1.0, self.t[-1])}
         for t, vtp in sorted(shown):
@@ -127,9 +130,9 @@ class Run:
                     'no draft plates' if self.vessel == 'no-plates' else 'draft plates', self.n,
                     self.u, t)
                 if field == 'velocity':
-                    spoutedbed.snapshot(g, vtp, name, title)
+                    bedmaps.snapshot(g, vtp, name, title)
                 else:
-                    spoutedbed.snapshot(g, vtp, name, title, field='label_left-right', vmin=0,
+                    bedmaps.snapshot(g, vtp, name, title, field='label_left-right', vmin=0,
                                         vmax=1, label='label: A (1, left at t = 0), B (0)')
         return names
 
@@ -159,10 +162,20 @@ def report(a):
     runs = finished_runs(a.final)
     lines = ['# degree of mixing: gas at u_s from the settled, segregated bed (t = 0); '
              'M_final is the mean over the last %g s; sampling cells 55 x 57 mm' % a.final]
-    lines += ['%s; snapshots: %s' % (r.summary(), ' '.join(r.snapshots())) for r in runs]
+    shown = [r.snapshots() for r in runs]
+    lines += ['%s; snapshots: %s' % (r.summary(), ' '.join(s)) for r, s in zip(runs, shown)]
     text = '\n'.join(lines) + '\n'
     open('mixing.txt', 'w').write(text)
     sys.stdout.write(text)
+    # the numbers as mixing.txt prints them, for protocols/results
+    with open('mixing.json', 'w') as f:
+        json.dump({'settings': lines[0].lstrip('# '), 'runs': [dict(
+            label=r.label, vessel=r.vessel, particles=r.n, u_m_s=float('%g' % r.u),
+            time_s=float('%.3g' % r.t[-1]), snapshots=s,
+            **{k.replace(' ', '_').replace('-', '_'): float('%.3f' % r.final[k])
+               for k in ('M_papers left-right', 'M_lacey left-right', 'M_papers lower-upper',
+                         'M_lacey lower-upper')}) for r, s in zip(runs, shown)]}, f, indent=1)
+        f.write('\n')
     with open('mixing.csv', 'w') as f:
         f.write('run,vessel,particles,superficial velocity [m/s],time [s],M_papers left-right,'
                 'M_lacey left-right,M_papers lower-upper,M_lacey lower-upper\n')

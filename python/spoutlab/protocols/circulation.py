@@ -10,10 +10,12 @@ that differ only in u_s share one settled bed.  Finished runs are kept, so
 running the command again after an interruption continues with the missing
 points (an interrupted one starts again, on its settled bed if it had one).
 
-Results: circulation_<study>.csv / .png / .txt
+Results: circulation_<study>.csv / .png / .txt, and circulation_<study>.json, the
+table's numbers (read by protocols/results)
 """
 import argparse
 import concurrent.futures
+import json
 import math
 import os
 import shutil
@@ -190,6 +192,14 @@ def main(argv):
                       % (r[0], r[1], r[4], r[5]) for r in table) + '\n'
     open(name + '.txt', 'w').write(text)
     sys.stdout.write(text)
+    # the table's numbers as it prints them, for protocols/results
+    with open(name + '.json', 'w') as f:
+        json.dump({'settings': text.splitlines()[0][1:].strip(),
+                   'points': [{'label': r[0], 'u_m_s': float('%.2f' % r[1]),
+                               'W_s_kg_s': float('%.4f' % r[4]),
+                               'correlation_kg_s': float('%.4f' % r[5])} for r in table]},
+                  f, indent=1)
+        f.write('\n')
     if o['study'] == 'velocity':
         sc.plot(name + '.png', '''
 set title "Particle circulation rate vs gas velocity (Fig 6)"
