@@ -82,6 +82,10 @@ public:
 
     virtual std::string name() const = 0;
 
+    // The model's isotherm and its stated ranges (StatedRange.hpp), for the
+    // run's range warnings; null and none for a model without an isotherm.
+    const SorptionIsotherm* sorptionIsotherm() const { return isotherm_.get(); }
+
     // Run-time selection; a model joins the registry from its own .cpp.
     static ModelRegistry<DryingModel>& registry();
     static std::unique_ptr<DryingModel> New(const std::string& typeName, const Parameters& props);

@@ -20,4 +20,10 @@ double Gunn::nusselt(const HeatTransferCell& cell, double re, double pr) const
     return lowRe + highRe;
 }
 
+std::vector<StatedRange> Gunn::statedRanges() const
+{
+    const std::string source = "Gunn 1978";
+    return {{"Re", 0.0, 1e5, source}, {"voidage", 0.35, 1.0, source}};
+}
+
 } // namespace spoutlab

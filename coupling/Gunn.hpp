@@ -6,6 +6,8 @@
 // with Re = eps rho |Us - u| d / mu on the superficial slip. Fitted for
 // 0.35 <= eps <= 1 and Re up to 1e5; at eps = 1 and Re = 0 it gives the
 // single-sphere Nu = 2, and unlike Sartori it stays positive at zero slip.
+// Those are its stated ranges (Gunn, Int. J. Heat Mass Transfer 21 (1978)
+// 467-476); a run beyond them is warned once (StatedRange.hpp).
 // No parameters.
 
 #include "HeatTransferModel.hpp"
@@ -19,6 +21,7 @@ public:
     explicit Gunn(const Parameters& props);
 
     double nusselt(const HeatTransferCell& cell, double re, double pr) const override;
+    std::vector<StatedRange> statedRanges() const override;
     std::string name() const override { return "Gunn"; }
 };
 

@@ -40,6 +40,7 @@ HeatExchange::cellCoefficients(const CellLocator& mesh, const std::vector<Partic
     out.h.assign(nCells, 0.0);
     out.reynolds.assign(nCells, 0.0);
     out.region.assign(nCells, -1);
+    out.correlation.assign(nCells, -1);
     out.K.assign(nCells, 0.0);
     out.S.assign(nCells, 0.0);
     if (vapourDiffusivity > 0.0) out.km.assign(nCells, 0.0);
@@ -54,6 +55,7 @@ HeatExchange::cellCoefficients(const CellLocator& mesh, const std::vector<Partic
         out.h[c] = h;
         out.reynolds[c] = heatTransferReynolds(cell, gas);
         out.region[c] = model_->region(cell);
+        out.correlation[c] = model_->correlationIndex(cell);
         out.K[c] = h * area / volume;
         out.S[c] = h * areaT / volume;
         if (vapourDiffusivity > 0.0)

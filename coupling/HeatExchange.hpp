@@ -39,6 +39,7 @@ struct HeatCellCoefficients
     std::vector<double> h;        // [W m^-2 K^-1]; 0 where there is no solid
     std::vector<double> reynolds; // Re = eps rho |Us - u| d/mu; 0 where there is no solid
     std::vector<int> region;      // 1 spout, 0 downcomer, -1 no rule or no solid
+    std::vector<int> correlation; // index into model().correlations(); -1 no solid
     std::vector<double> K;        // implicit coefficient [W m^-3 K^-1]
     std::vector<double> S;        // explicit part [W m^-3]
     std::vector<double> km;       // k_m [m/s] of the same correlation at Sc (with drying); else empty

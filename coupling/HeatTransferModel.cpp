@@ -31,6 +31,21 @@ int HeatTransferModel::region(const HeatTransferCell&) const
     return -1;
 }
 
+std::vector<const HeatTransferModel*> HeatTransferModel::correlations() const
+{
+    return {this};
+}
+
+int HeatTransferModel::correlationIndex(const HeatTransferCell&) const
+{
+    return 0;
+}
+
+std::vector<StatedRange> HeatTransferModel::statedRanges() const
+{
+    return {};
+}
+
 // Built on first use, before any correlation's registration object adds to it.
 ModelRegistry<HeatTransferModel>& HeatTransferModel::registry()
 {

@@ -21,6 +21,7 @@
 
 #include "ModelRegistry.hpp"
 #include "Parameters.hpp"
+#include "StatedRange.hpp"
 #include "Vec3.hpp"
 
 #include <memory>
@@ -77,6 +78,16 @@ public:
     // 1 where the cell counts as spout, 0 where it counts as downcomer, for
     // models that tell the two apart; -1 for a single correlation everywhere.
     virtual int region(const HeatTransferCell& cell) const;
+
+    // The single correlations this model applies (itself, or a region rule's
+    // sub-models), and which of them applies in a cell: what a run checks
+    // against each correlation's stated ranges.
+    virtual std::vector<const HeatTransferModel*> correlations() const;
+    virtual int correlationIndex(const HeatTransferCell& cell) const;
+
+    // The ranges of "Re" and "voidage" the correlation's source states (none
+    // unless the model says so).
+    virtual std::vector<StatedRange> statedRanges() const;
 
     virtual std::string name() const = 0;
 

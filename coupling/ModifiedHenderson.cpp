@@ -69,4 +69,10 @@ SorptionIsotherm::Activity ModifiedHenderson::activity(double moisture, double t
             z == 0.0 ? 1.0 / tPlusC : z / tPlusC * (1.0 + em) / -em};
 }
 
+std::vector<StatedRange> ModifiedHenderson::statedRanges() const
+{
+    const std::string source = "ASAE D245.5";
+    return {{"temperature", 273.15, 323.15, source}, {"relative humidity", 0.10, 0.90, source}};
+}
+
 } // namespace spoutlab

@@ -9,7 +9,8 @@
 // These constants reproduce the shelled-corn EMC tables printed from the
 // Henderson-Thompson equation (e.g. 17.2 % w.b. at 60 degF and 80 % RH) to
 // their last digit. ASAE gives the fits for about 0-50 degC and 10-90 % RH;
-// beyond (hot drying air) they are extrapolations.
+// beyond (hot drying air) they are extrapolations, warned once per run
+// (StatedRange.hpp).
 // No parameters.
 
 #include "SorptionIsotherm.hpp"
@@ -27,6 +28,7 @@ public:
     double waterActivityDerivative(double moisture, double temperature) const override;
     double lnWaterActivitySlope(double moisture, double temperature) const override;
     Activity activity(double moisture, double temperature) const override;
+    std::vector<StatedRange> statedRanges() const override;
     std::string name() const override { return "modifiedHenderson"; }
 };
 

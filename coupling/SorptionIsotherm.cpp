@@ -37,4 +37,9 @@ std::unique_ptr<SorptionIsotherm> SorptionIsotherm::New(const std::string& typeN
     return registry().create(typeName, props);
 }
 
+std::vector<StatedRange> SorptionIsotherm::statedRanges() const
+{
+    return {};
+}
+
 } // namespace spoutlab

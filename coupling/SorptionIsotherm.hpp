@@ -19,6 +19,7 @@
 
 #include "ModelRegistry.hpp"
 #include "Parameters.hpp"
+#include "StatedRange.hpp"
 
 #include <memory>
 #include <string>
@@ -60,6 +61,10 @@ public:
     double latentHeat(double moisture, double temperature) const;
     // ... with (d ln a_w / dT)_X already known (Activity::lnSlope).
     static double latentHeat(double temperature, const Activity& activity);
+
+    // The ranges of the grain's "temperature" [K] and the air's "relative
+    // humidity" [0..1] its source fitted (none unless the isotherm says so).
+    virtual std::vector<StatedRange> statedRanges() const;
 
     virtual std::string name() const = 0;
 

@@ -66,6 +66,16 @@ int SpoutDowncomer::region(const HeatTransferCell& cell) const
     return inBand || cell.centre.z >= fountainBase_ ? 1 : 0;
 }
 
+std::vector<const HeatTransferModel*> SpoutDowncomer::correlations() const
+{
+    return {spout_.get(), downcomer_.get()};
+}
+
+int SpoutDowncomer::correlationIndex(const HeatTransferCell& cell) const
+{
+    return region(cell) == 1 ? 0 : 1;
+}
+
 double SpoutDowncomer::nusselt(const HeatTransferCell& cell, double re, double pr) const
 {
     return (region(cell) == 1 ? spout_ : downcomer_)->nusselt(cell, re, pr);

@@ -30,6 +30,9 @@ public:
 
     double nusselt(const HeatTransferCell& cell, double re, double pr) const override;
     int region(const HeatTransferCell& cell) const override;
+    // {spout, downcomer}
+    std::vector<const HeatTransferModel*> correlations() const override;
+    int correlationIndex(const HeatTransferCell& cell) const override;
     std::string name() const override { return "spoutDowncomer"; }
 
 private:

@@ -2,6 +2,7 @@
     SpoutLab: gas-to-particle heat transfer on the CFD side.
 \*---------------------------------------------------------------------------*/
 #include "HeatCoupling.H"
+#include "RangeWarnings.H"
 
 #include "FoamParameters.H"
 #include "InputError.hpp"
@@ -150,6 +151,12 @@ HeatCoupling::HeatCoupling
 {
     checkCase();
     centres_ = locator_.withHalo(mesh.C().primitiveField());
+    for (const HeatTransferModel* c : exchange_.model().correlations())
+    {
+        ranges_.add(c->name(), c->statedRanges());
+        reSlot_.push_back(ranges_.slot(c->name(), "Re"));
+        voidageSlot_.push_back(ranges_.slot(c->name(), "voidage"));
+    }
 }
 
 
@@ -228,6 +235,22 @@ void HeatCoupling::updateCoefficients
     hp_.correctBoundaryConditions();
     Rep_.correctBoundaryConditions();
     updateQs();
+    watchRanges(eps);
+}
+
+
+void HeatCoupling::watchRanges(const std::vector<double>& eps)
+{
+    // the voidage the correlation saw (clipped as for the drag)
+    if (ranges_.empty()) return;
+    forAll(hp_, i)
+    {
+        const int c = cells_.correlation[i];
+        if (c < 0) continue;
+        ranges_.see(reSlot_[c], cells_.reynolds[i]);
+        ranges_.see(voidageSlot_[c], eps[i]);
+    }
+    reportRanges(ranges_);
 }
 
 

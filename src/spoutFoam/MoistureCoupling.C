@@ -2,6 +2,7 @@
     SpoutLab: drying on the CFD side.
 \*---------------------------------------------------------------------------*/
 #include "MoistureCoupling.H"
+#include "RangeWarnings.H"
 
 #include "FoamParameters.H"
 #include "InputError.hpp"
@@ -150,6 +151,12 @@ MoistureCoupling::MoistureCoupling
     cp_(field(mesh, "cpGas", false), mesh, Foam::dimensionedScalar("cpAir", dimSpecificHeat, cpAir))
 {
     checkCase();
+    if (const SorptionIsotherm* isotherm = exchange_.model().sorptionIsotherm())
+    {
+        ranges_.add(isotherm->name(), isotherm->statedRanges());
+        temperatureSlot_ = ranges_.slot(isotherm->name(), "temperature");
+        humiditySlot_ = ranges_.slot(isotherm->name(), "relative humidity");
+    }
 }
 
 
@@ -307,6 +314,25 @@ void MoistureCoupling::dryParticles
     }
     Sv_.correctBoundaryConditions();
     Hv_.correctBoundaryConditions();
+    watchRanges(particles, cells);
+}
+
+
+void MoistureCoupling::watchRanges
+(
+    const std::vector<Particle>& particles,
+    const HeatCellCoefficients& cells
+)
+{
+    // the isotherm is evaluated at the kernel's temperature in the air of
+    // its cells: the kernels' temperatures, the humidity where there is solid
+    if (ranges_.empty()) return;
+    for (const Particle& p : particles) ranges_.see(temperatureSlot_, p.temperature);
+    forAll(RH_, i)
+    {
+        if (cells.h[i] > 0) ranges_.see(humiditySlot_, RH_[i]);
+    }
+    reportRanges(ranges_);
 }
 
 
