@@ -80,7 +80,10 @@ void CirculationStatistics::addResidence(int index, double tau, double t)
 void CirculationStatistics::enter(double t, int state, double* track)
 {
     const int left = int(track[0]);
-    if (track[1] >= 0) addResidence(left, t - track[1], t);
+    if (track[1] >= 0)
+        addResidence(left, t - track[1], t);
+    else
+        openStart_[std::size_t(left)] += t - (-track[1] - 1);
     track[0] = state;
     track[1] = t;
     entries_[std::size_t(state)] += 1;
@@ -97,9 +100,9 @@ void CirculationStatistics::observe(double t, const Vec3& x, double* track, cons
     if (state < 0)
     {
         if (region == noRegion) return;
-        // first seen: an incomplete visit, no entry time
+        // first seen: an incomplete visit, its time kept as -1 - t
         track[0] = state = region;
-        track[1] = -1;
+        track[1] = -1 - t;
         track[2] = -1;
     }
     else if (region == (state + 1) % nCirculationRegions)
@@ -134,23 +137,43 @@ double CirculationStatistics::meanSeen(int state, int quantity) const
     return n > 0 ? seen_[std::size_t(state)][std::size_t(quantity)] / n : 0.0;
 }
 
-// Layout: sampleTimes, skipped, entries[4], occupancy[4], seen[4][7], per
+std::array<double, nCirculationRegions> CirculationStatistics::openAtEnd(const std::vector<double*>& tracks,
+                                                                         double tLast, double dt)
+{
+    std::array<double, nCirculationRegions> open{};
+    for (const double* track : tracks)
+    {
+        if (track[0] < 0) continue;
+        const double entry = track[1] >= 0 ? track[1] : -track[1] - 1;
+        open[std::size_t(track[0])] += tLast - entry + dt;
+    }
+    return open;
+}
+
+// Layout: sampleTimes, skipped, entries[4], occupancy[4], openStart[4], seen[4][7], per
 // distribution (5) the moments all, first, second (3 each), then the number
 // of bins n and the 5 histograms of n bins each.
-std::vector<double> CirculationStatistics::pack() const
+std::size_t CirculationStatistics::bins() const
+{
+    std::size_t n = 0;
+    for (const ResidenceDistribution& d : residence_) n = std::max(n, d.counts.size());
+    return n;
+}
+
+std::vector<double> CirculationStatistics::pack(std::size_t minBins) const
 {
     std::vector<double> p = {sampleTimes_, skipped_};
     p.insert(p.end(), entries_.begin(), entries_.end());
     p.insert(p.end(), occupancy_.begin(), occupancy_.end());
+    p.insert(p.end(), openStart_.begin(), openStart_.end());
     for (const auto& row : seen_) p.insert(p.end(), row.begin(), row.end());
-    std::size_t bins = 0;
+    const std::size_t bins = std::max(minBins, this->bins());
     for (const ResidenceDistribution& d : residence_)
     {
         for (const Moments* m : {&d.all, &d.halves[0], &d.halves[1]})
         {
             p.insert(p.end(), {m->samples, m->sum, m->sumSquares});
         }
-        bins = std::max(bins, d.counts.size());
     }
     p.push_back(double(bins));
     for (const ResidenceDistribution& d : residence_)
@@ -164,7 +187,7 @@ namespace
 {
 
 constexpr std::size_t fixedPackSize =
-    2 + 2 * nCirculationRegions + nCirculationRegions * nSampleQuantities + (nCirculationRegions + 1) * 9;
+    2 + 3 * nCirculationRegions + nCirculationRegions * nSampleQuantities + (nCirculationRegions + 1) * 9;
 
 } // namespace
 
@@ -182,6 +205,7 @@ void CirculationStatistics::add(const std::vector<double>& packed)
     skipped_ += packed[k++];
     for (double& e : entries_) e += packed[k++];
     for (double& o : occupancy_) o += packed[k++];
+    for (double& o : openStart_) o += packed[k++];
     for (auto& row : seen_)
     {
         for (double& v : row) v += packed[k++];
@@ -208,6 +232,7 @@ void CirculationStatistics::clear()
     residence_ = {};
     entries_ = {};
     occupancy_ = {};
+    openStart_ = {};
     seen_ = {};
     sampleTimes_ = 0;
     skipped_ = 0;

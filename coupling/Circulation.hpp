@@ -25,7 +25,14 @@
 // solver a LIGGGHTS per-atom property, so it follows the atom across ranks and
 // into restarts): the state (-1 before the particle is first seen), the time
 // it entered the state (-1: an incomplete visit) and the time of its last
-// entry into the spout (-1: none yet).
+// entry into the spout (-1: none yet). An incomplete visit keeps the time t
+// it was first seen as -1 - t.
+//
+// Little's law over the finite window, with its boundary terms, holds exactly
+// per state: holdup x window = the completed residences + the time of the
+// incomplete first visits that ended in the window (openAtStart) + the time
+// in the window of the visits still open at its end (openAtEnd, from the
+// tracks), each sample counting one sampling interval.
 //
 // Per state, over every sample (particle in the state at a sampling time):
 // the holdup (particles per sampling time) and the mean of what the particle
@@ -141,8 +148,17 @@ public:
     // samples of particles found in the region two steps ahead of their state
     // (a skipped region: the sampling was too coarse), over all states
     double skippedSamples() const { return skipped_; }
+    // time of the incomplete first visits in the state that ended [s]
+    double openAtStart(int state) const { return openStart_[std::size_t(state)]; }
+    // time in the window of the visits open at the last sample tLast, per
+    // state, over the tracks given (one rank's particles) [s]
+    static std::array<double, nCirculationRegions> openAtEnd(const std::vector<double*>& tracks, double tLast,
+                                                             double dt);
 
-    std::vector<double> pack() const;
+    // the packed histograms hold at least `bins` bins each (ranks pack to
+    // the same length); bins() is this one's longest histogram
+    std::vector<double> pack(std::size_t bins = 0) const;
+    std::size_t bins() const;
     void unpack(const std::vector<double>& packed); // throws std::invalid_argument on a size mismatch
     void add(const std::vector<double>& packed);
     void clear();
@@ -153,6 +169,7 @@ private:
     std::array<ResidenceDistribution, nCirculationRegions + 1> residence_;
     std::array<double, nCirculationRegions> entries_{};
     std::array<double, nCirculationRegions> occupancy_{}; // particle samples per state
+    std::array<double, nCirculationRegions> openStart_{};
     std::array<std::array<double, nSampleQuantities>, nCirculationRegions> seen_{};
     double sampleTimes_ = 0;
     double skipped_ = 0;

@@ -120,6 +120,32 @@ TEST(CirculationStatistics, OneCycleByHand)
     EXPECT_EQ(track[0], fountainRegion);
     EXPECT_NEAR(track[1], 1.5, 1e-12);
     EXPECT_NEAR(track[2], 1.1, 1e-12);
+    // Little's law with its boundary terms: the incomplete first spout visit
+    // 0 .. 0.3 s, the fountain visit open at the last sample (1.5 s) 0.1 s;
+    // holdup x 16 samples x 0.1 s = completed + open at start + open at end
+    EXPECT_NEAR(stats.openAtStart(spoutRegion), 0.3, 1e-12);
+    const auto open = CirculationStatistics::openAtEnd({track.data()}, 1.5, 0.1);
+    EXPECT_NEAR(open[fountainRegion], 0.1, 1e-12);
+    EXPECT_EQ(open[spoutRegion], 0.0);
+    for (int s = 0; s < nCirculationRegions; ++s)
+    {
+        const double completed = stats.residence(s).all.sum;
+        EXPECT_NEAR(stats.holdup(s) * 16 * 0.1, completed + stats.openAtStart(s) + open[std::size_t(s)],
+                    1e-12)
+            << circulationRegionName(s);
+    }
+}
+
+// A particle seen in one state for the whole window: all its time is open.
+TEST(CirculationStatistics, VisitSpanningTheWindowIsOpenAtEnd)
+{
+    CirculationStatistics stats(bed, 1.0, 100.0, 0.05);
+    std::vector<double> track = freshTrack();
+    follow(stats, track, repeat(inDowncomer, 30), 0.0, 0.1); // samples 1.0 .. 2.9 in the window
+    const auto open = CirculationStatistics::openAtEnd({track.data()}, 2.9, 0.1);
+    EXPECT_NEAR(open[downcomerRegion], 2.0, 1e-12);
+    EXPECT_NEAR(stats.holdup(downcomerRegion) * stats.sampleTimes() * 0.1, 2.0, 1e-12);
+    EXPECT_EQ(stats.openAtStart(downcomerRegion), 0.0);
 }
 
 // Two cycles: the cycle time is between spout entries at 1.0 and 2.0
