@@ -74,7 +74,15 @@ void CirculationStatistics::addResidence(int index, double tau, double t)
     if (d.counts.size() <= bin) d.counts.resize(bin + 1, 0.0);
     d.counts[bin] += 1;
     d.all.add(tau);
-    d.halves[t < halfSplit_ ? 0 : 1].add(tau);
+    // each half a window of its own: a visit counts in the half it begins
+    // and ends in, so both halves cut off long visits alike (by the end of
+    // the visit alone, the first half would hold only the visits short
+    // enough to end in it); one straddling the split counts in neither
+    const double begin = t - tau;
+    if (t < halfSplit_)
+        d.halves[0].add(tau);
+    else if (begin >= halfSplit_)
+        d.halves[1].add(tau);
 }
 
 void CirculationStatistics::enter(double t, int state, double* track)

@@ -38,7 +38,9 @@
 // the holdup (particles per sampling time) and the mean of what the particle
 // sees (ParticleSample). Residence times go into a histogram (bin i covers
 // [i w, (i + 1) w)) and into the moments of the whole window and of its two
-// halves, a visit counting in the half in which it ends.
+// halves, each half taken as a window of its own: a visit counts in the half
+// in which it begins and ends (one straddling the split in neither), so that
+// both halves cut long visits off alike and agree for a steady bed.
 //
 // Everything the statistics hold is a sum: pack() gives it as one vector
 // whose element-wise sum over the ranks is the statistics of the whole bed

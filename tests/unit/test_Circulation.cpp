@@ -237,9 +237,8 @@ TEST(CirculationStatistics, NothingBeforeTheAveragingStart)
 
 // Bins cover [i w, (i + 1) w): with w = 0.1, residences 0.05 (bin 0),
 // 0.1 (bin 1), 0.25 (bin 2), 0.3 (bin 3); visits ending before the split
-// (t = 2) go to the first half. 0.65 - 0.55 is 0.0999... in doubles: a
-// residence on a bin edge, a whole number of sampling intervals, must still
-// count in the upper bin.
+// (t = 2) go to the first half, those beginning after it to the second. 0.65 - 0.55 is 0.0999... in doubles:
+// a residence on a bin edge, a whole number of sampling intervals, must still count in the upper bin.
 TEST(CirculationStatistics, HistogramBinsAndHalves)
 {
     CirculationStatistics stats(bed, 0.0, 2.0, 0.1);
@@ -249,7 +248,9 @@ TEST(CirculationStatistics, HistogramBinsAndHalves)
     {
         double t0, tau;
     };
-    const std::vector<Visit> visits = {{0.0, 0.05}, {0.5, 0.1}, {2.0, 0.25}, {3.0, 0.3}};
+    // the fifth enters at 1.95 and leaves at 2.05: it straddles the split
+    // and counts in neither half
+    const std::vector<Visit> visits = {{0.0, 0.05}, {0.5, 0.1}, {2.0, 0.25}, {3.0, 0.3}, {1.9, 0.1}};
     for (const Visit& v : visits)
     {
         std::vector<double> track = freshTrack();
@@ -259,10 +260,10 @@ TEST(CirculationStatistics, HistogramBinsAndHalves)
                v.t0, 0.05);
     }
     const ResidenceDistribution& f = stats.residence(fountainRegion);
-    ASSERT_EQ(f.all.samples, 4);
+    ASSERT_EQ(f.all.samples, 5);
     ASSERT_GE(f.counts.size(), 4u);
     EXPECT_EQ(f.counts[0], 1);
-    EXPECT_EQ(f.counts[1], 1);
+    EXPECT_EQ(f.counts[1], 2);
     EXPECT_EQ(f.counts[2], 1);
     EXPECT_EQ(f.counts[3], 1);
     EXPECT_EQ(f.halves[0].samples, 2);
