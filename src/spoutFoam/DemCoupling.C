@@ -85,6 +85,7 @@ DemCoupling::DemCoupling
             mesh.time(), bool(thermal_), thermal_ && thermal_->drying(), resumed_
         )
     );
+    circulation_ = CirculationCoupling::New(mesh_, dict_, phi, rho.value());
     writeFoamStub();
     startFromBed();
 }
@@ -137,7 +138,8 @@ void DemCoupling::startDem()
 {
     dem_ = startLiggghts
     (
-        mesh_.time(), dict_, liggghtsInput_, MoistureCoupling::stateSize(dict_)
+        mesh_.time(), dict_, liggghtsInput_, MoistureCoupling::stateSize(dict_),
+        CirculationCoupling::trackWidth(dict_)
     );
     if (Foam::Pstream::parRun()) matchSlabs(mesh_, *dem_, locator_);
     resumeStepState();
@@ -290,6 +292,10 @@ void DemCoupling::endStep(const Foam::surfaceScalarField& phiU)
     row_.gasReceived = sumOverRanks(fields_.gasMomentum(U_));
     guards_.checkCourant(phiU, maxCo_);
     log_->write(row_);
+    if (circulation_)
+    {
+        circulation_->sample(*dem_, particles_, vf_.map, eps_, locator_, thermal_.get());
+    }
 }
 
 
@@ -343,6 +349,7 @@ void DemCoupling::write()
 
     guards_.written(runTime.timeName());
     writeParticles();
+    if (circulation_) circulation_->write(*dem_, particles_, thermal_.get(), true);
     // LIGGGHTS 3.8 cannot write a system without atoms (its set-up stops
     // with "Atom types must start from 1"): once lostParticles delete has
     // removed the last particle there is no DEM restart, and a restart from
@@ -372,6 +379,7 @@ void DemCoupling::writeParticles()
 void DemCoupling::finish()
 {
     log_->flush();
+    if (circulation_) circulation_->report();
     // how often LIGGGHTS rebuilt its neighbour lists (bench/neighbourSettings):
     // a rebuild costs several plain DEM steps
     Foam::Info<< "LIGGGHTS: " << dem_->neighbourBuilds() << " neighbour list builds in "

@@ -92,7 +92,8 @@ LiggghtsDem::LiggghtsDem
     const std::map<std::string, std::string>& variables,
     const std::string& logFile,
     MPI_Comm comm,
-    int moistureState
+    int moistureState,
+    int circulationTrack
 )
 :
     lmp_(nullptr),
@@ -135,6 +136,7 @@ LiggghtsDem::LiggghtsDem
     findCouplingFixes(inputFile);
     findHeatFixes(inputFile);
     if (moistureState >= 0) declareMoisture(inputFile, moistureState);
+    if (circulationTrack > 0) declareCirculationTrack(circulationTrack);
     {
         Activity doing("setting up the DEM run");
         setup();
@@ -291,6 +293,34 @@ void LiggghtsDem::declareMoisture(const std::string& inputFile, int stateSize)
     // atoms every step (else a contact across a rank boundary sees the mass
     // of the last re-neighbouring)
     dryMass_->rad_mass_vary_flag = 1;
+}
+
+
+void LiggghtsDem::declareCirculationTrack(int width)
+{
+    // like the dry mass: declared after the input read its restart, so a
+    // restarted run gets the tracks back; -1 marks an atom not yet seen
+    std::string cmd = "fix spoutFoamCirculation all property/atom circulationTrack vector yes no no";
+    for (int k = 0; k < width; ++k) cmd += " -1";
+    command(cmd);
+    circulationTrack_ = static_cast<LAMMPS_NS::FixPropertyAtom*>
+    (
+        lmp_->modify->find_fix_property
+        (
+            "circulationTrack", "property/atom", "vector", width, 0, "spoutFoam"
+        )
+    );
+}
+
+
+std::vector<double*> LiggghtsDem::circulationTracks() const
+{
+    if (!circulationTrack_) throw std::logic_error("LiggghtsDem: no circulation tracks declared");
+    const std::vector<int> atoms = localAtoms();
+    std::vector<double*> rows(atoms.size());
+    double** tracks = circulationTrack_->array_atom;
+    for (std::size_t k = 0; k < atoms.size(); ++k) rows[k] = tracks[atoms[k]];
+    return rows;
 }
 
 

@@ -54,7 +54,8 @@ std::unique_ptr<LiggghtsDem> startLiggghts
     const Foam::Time& runTime,
     const Foam::dictionary& couplingDict,
     std::string& inputFile,
-    int moistureState
+    int moistureState,
+    int circulationTrack
 )
 {
     const Foam::fileName caseDir = runTime.globalPath();
@@ -70,7 +71,8 @@ std::unique_ptr<LiggghtsDem> startLiggghts
     (
         new LiggghtsDem
         (
-            input, vars, caseDir/"log.liggghts", MPI_COMM_WORLD, moistureState
+            input, vars, caseDir/"log.liggghts", MPI_COMM_WORLD, moistureState,
+            circulationTrack
         )
     );
 }

@@ -1,0 +1,183 @@
+#pragma once
+// Circulation statistics of a draft-plate spouted bed (issue 24 item 1): each
+// particle's sequence of regions, the residence time in each and the time of a
+// whole cycle, and what a particle sees in each.
+//
+// Regions (x across, z up, origin at the centre of the inlet slot; SI):
+//   spout        |x| <= Wd/2,                 He <= z < Hd
+//   fountain     z >= Hd (at any x)
+//   downcomer    |x| >= Wd/2 + plateThickness, He <= z < Hd
+//   entrainment  z < He (at any x)
+// and none inside a plate (Wd/2 < |x| < Wd/2 + plateThickness, He <= z < Hd),
+// where no particle can be.
+//
+// A particle's state advances only in the cycle order
+//   spout -> fountain -> downcomer -> entrainment -> spout:
+// it enters the next state when it is first found in that region; found in any
+// other region (flicker at a boundary, a fountain particle falling back into
+// the spout) the state stays. The residence time of a state is the time from
+// entering it to entering the next; the cycle time the time between two
+// successive entries into the spout. Tracking starts at the averaging start:
+// the state a particle is first found in there is an incomplete visit and not
+// counted, nor the first cycle until its first entry into the spout.
+//
+// Each particle's track is trackWidth doubles kept with the particle (in the
+// solver a LIGGGHTS per-atom property, so it follows the atom across ranks and
+// into restarts): the state (-1 before the particle is first seen), the time
+// it entered the state (-1: an incomplete visit) and the time of its last
+// entry into the spout (-1: none yet). An incomplete visit keeps the time t
+// it was first seen as -1 - t.
+//
+// Little's law over the finite window, with its boundary terms, holds exactly
+// per state: holdup x window = the completed residences + the time of the
+// incomplete first visits that ended in the window (openAtStart) + the time
+// in the window of the visits still open at its end (openAtEnd, from the
+// tracks), each sample counting one sampling interval.
+//
+// Per state, over every sample (particle in the state at a sampling time):
+// the holdup (particles per sampling time) and the mean of what the particle
+// sees (ParticleSample). Residence times go into a histogram (bin i covers
+// [i w, (i + 1) w)) and into the moments of the whole window and of its two
+// halves, each half taken as a window of its own: a visit counts in the half
+// in which it begins and ends (one straddling the split in neither), so that
+// both halves cut long visits off alike and agree for a steady bed.
+//
+// Everything the statistics hold is a sum: pack() gives it as one vector
+// whose element-wise sum over the ranks is the statistics of the whole bed
+// (add), and unpack() restores a packed vector (restarts).
+
+#include "Vec3.hpp"
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace spoutlab
+{
+
+enum CirculationRegion : int
+{
+    noRegion = -1,
+    spoutRegion = 0,
+    fountainRegion = 1,
+    downcomerRegion = 2,
+    entrainmentRegion = 3
+};
+constexpr int nCirculationRegions = 4;
+
+// "spout", "fountain", "downcomer", "entrainment"
+const char* circulationRegionName(int region);
+
+class DraftPlateRegions
+{
+public:
+    // lengths in m; throws InputError naming `context` unless
+    // 0 < Wd, 0 <= plateThickness, He < Hd
+    DraftPlateRegions(double Wd, double He, double Hd, double plateThickness,
+                      const std::string& context = "draft-plate regions");
+
+    int region(double x, double z) const;
+
+    double Wd() const { return Wd_; }
+    double He() const { return He_; }
+    double Hd() const { return Hd_; }
+    double plateThickness() const { return thickness_; }
+
+private:
+    double Wd_, He_, Hd_, thickness_;
+};
+
+// What one particle sees at a sampling time (weighted over its cells).
+struct ParticleSample
+{
+    double voidage = 0;   // eps
+    double slipRe = 0;    // Re = eps rho |u - Us| d/mu
+    double h = 0;         // [W m^-2 K^-1]
+    double km = 0;        // [m/s]
+    double Tgas = 0;      // [K]
+    double Y = 0;         // vapour mass fraction
+    double Tparticle = 0; // [K]
+};
+constexpr int nSampleQuantities = 7;
+
+struct Moments
+{
+    double samples = 0, sum = 0, sumSquares = 0;
+
+    void add(double value);
+    double mean() const;
+    double std() const; // sample standard deviation (n - 1); 0 below two samples
+};
+
+struct ResidenceDistribution
+{
+    std::vector<double> counts; // per bin
+    Moments all;
+    std::array<Moments, 2> halves;
+};
+
+class CirculationStatistics
+{
+public:
+    static constexpr int trackWidth = 3;
+    static constexpr int cycle = nCirculationRegions; // index of the cycle's distribution
+
+    // averageStart: tracking and sums start at samples t >= averageStart;
+    // halfSplit: the time between the window's two halves; binWidth > 0 [s]
+    CirculationStatistics(const DraftPlateRegions& regions, double averageStart, double halfSplit,
+                          double binWidth);
+
+    // One particle at sampling time t: its track advanced, its sample added
+    // to its state's sums. Nothing before averageStart.
+    void observe(double t, const Vec3& x, double* track, const ParticleSample& seen);
+    // After the particles of a sampling time: one more sampling time.
+    void endSample(double t);
+
+    const DraftPlateRegions& regions() const { return regions_; }
+    double averageStart() const { return averageStart_; }
+    double binWidth() const { return binWidth_; }
+    double sampleTimes() const { return sampleTimes_; }
+
+    // index 0..3 a state, cycle the cycle
+    const ResidenceDistribution& residence(int index) const { return residence_[index]; }
+    // entries into a state (transitions observed into it)
+    double entries(int state) const { return entries_[state]; }
+    // mean particles in the state per sampling time
+    double holdup(int state) const;
+    // mean of a ParticleSample quantity (0..nSampleQuantities-1, in the
+    // struct's order) over the samples in the state; 0 without samples
+    double meanSeen(int state, int quantity) const;
+    // samples of particles found in the region two steps ahead of their state
+    // (a skipped region: the sampling was too coarse), over all states
+    double skippedSamples() const { return skipped_; }
+    // time of the incomplete first visits in the state that ended [s]
+    double openAtStart(int state) const { return openStart_[std::size_t(state)]; }
+    // time in the window of the visits open at the last sample tLast, per
+    // state, over the tracks given (one rank's particles) [s]
+    static std::array<double, nCirculationRegions> openAtEnd(const std::vector<double*>& tracks, double tLast,
+                                                             double dt);
+
+    // the packed histograms hold at least `bins` bins each (ranks pack to
+    // the same length); bins() is this one's longest histogram
+    std::vector<double> pack(std::size_t bins = 0) const;
+    std::size_t bins() const;
+    void unpack(const std::vector<double>& packed); // throws std::invalid_argument on a size mismatch
+    void add(const std::vector<double>& packed);
+    void clear();
+
+private:
+    DraftPlateRegions regions_;
+    double averageStart_, halfSplit_, binWidth_;
+    std::array<ResidenceDistribution, nCirculationRegions + 1> residence_;
+    std::array<double, nCirculationRegions> entries_{};
+    std::array<double, nCirculationRegions> occupancy_{}; // particle samples per state
+    std::array<double, nCirculationRegions> openStart_{};
+    std::array<std::array<double, nSampleQuantities>, nCirculationRegions> seen_{};
+    double sampleTimes_ = 0;
+    double skipped_ = 0;
+
+    void addResidence(int index, double tau, double t);
+    void enter(double t, int state, double* track);
+};
+
+} // namespace spoutlab

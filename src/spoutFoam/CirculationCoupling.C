@@ -1,0 +1,575 @@
+/*---------------------------------------------------------------------------*\
+    SpoutLab: circulation statistics measured in the coupled run.
+\*---------------------------------------------------------------------------*/
+#include "CirculationCoupling.H"
+
+#include "IFstream.H"
+#include "InputError.hpp"
+#include "ShortNumbers.H"
+
+#include <mpi.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+namespace spoutlab
+{
+
+namespace
+{
+
+const std::string file = "constant/couplingProperties";
+
+// gas_, maxStep_, firstSample_, lastSample_ after the statistics' own
+constexpr int extraWidth = 6;
+
+
+double lengthEntry(const Foam::dictionary& dict, const std::string& where, const Foam::word& key)
+{
+    double value = 0;
+    if (!dict.readIfPresent(key, value) || !std::isfinite(value))
+    {
+        throw InputError
+        (
+            where + ": key '" + key + "' expected a length in mm (circulation "
+            "statistics, draft-plate geometry)"
+        );
+    }
+    return 1e-3*value;
+}
+
+
+std::string number(double v)
+{
+    char text[32];
+    std::snprintf(text, sizeof text, "%.10g", std::isfinite(v) ? v : 0.0);
+    return text;
+}
+
+
+// {"samples": n, "mean": s, "std": s}
+std::string moments(const Moments& m)
+{
+    return "{\"samples\": " + number(m.samples) + ", \"mean\": " + number(m.mean())
+        + ", \"std\": " + number(m.std()) + "}";
+}
+
+
+std::string residenceEntry(const ResidenceDistribution& d, double binWidth)
+{
+    std::string counts;
+    for (std::size_t b = 0; b < d.counts.size(); ++b)
+    {
+        counts += (b ? ", " : "") + number(d.counts[b]);
+    }
+    return "{\"binWidth\": " + number(binWidth) + ", \"counts\": [" + counts
+        + "], \"samples\": " + number(d.all.samples) + ", \"mean\": "
+        + number(d.all.mean()) + ", \"std\": " + number(d.all.std()) + "}";
+}
+
+
+std::string distributionName(int index)
+{
+    return index == CirculationStatistics::cycle ? "cycle" : circulationRegionName(index);
+}
+
+
+double weighted(const ParticleCellMap::Row& row, const std::vector<double>& field)
+{
+    double sum = 0;
+    for (const CellWeight& cw : row) sum += cw.weight*field[cw.cell];
+    return sum;
+}
+
+
+double patchMean(const Foam::fvMesh& mesh, const Foam::volScalarField& field, const Foam::word& patch)
+{
+    const Foam::label i = mesh.boundaryMesh().findPatchID(patch);
+    double sums[2] = {0, 0};
+    if (i >= 0)
+    {
+        const Foam::scalarField& area = mesh.magSf().boundaryField()[i];
+        forAll(area, f)
+        {
+            sums[0] += area[f]*field.boundaryField()[i][f];
+            sums[1] += area[f];
+        }
+    }
+    MPI_Allreduce(MPI_IN_PLACE, sums, 2, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+    return sums[1] > 0 ? sums[0]/sums[1] : 0.0;
+}
+
+} // namespace
+
+
+int CirculationCoupling::trackWidth(const Foam::dictionary& couplingDict)
+{
+    return couplingDict.found("circulation") ? CirculationStatistics::trackWidth : 0;
+}
+
+
+std::unique_ptr<CirculationCoupling> CirculationCoupling::New
+(
+    const Foam::fvMesh& mesh,
+    const Foam::dictionary& couplingDict,
+    const Foam::surfaceScalarField& phi,
+    double rho
+)
+{
+    if (!couplingDict.found("circulation")) return nullptr;
+    if (!couplingDict.isDict("circulation"))
+    {
+        throw InputError
+        (
+            file + ": key 'circulation' expected a dictionary "
+            "{ averageStart <s>; binWidth <s>; }"
+        );
+    }
+    return std::unique_ptr<CirculationCoupling>
+    (
+        new CirculationCoupling(mesh, couplingDict, phi, rho)
+    );
+}
+
+
+CirculationStatistics CirculationCoupling::settings
+(
+    const Foam::fvMesh& mesh,
+    const Foam::dictionary& couplingDict,
+    double& width,
+    double& depth
+)
+{
+    const Foam::dictionary& dict = couplingDict.subDict("circulation");
+    double start = -1, bin = 0.05;
+    if (!dict.readIfPresent("averageStart", start) || !(start >= 0))
+    {
+        throw InputError
+        (
+            file + ": key 'circulation/averageStart' expected the time [s] "
+            "from which the statistics are taken, a number >= 0"
+        );
+    }
+    if (dict.readIfPresent("binWidth", bin) && !(bin > 0))
+    {
+        throw InputError
+        (
+            file + ": key 'circulation/binWidth' expected the histogram bin "
+            "width [s], a positive number"
+        );
+    }
+    const Foam::fileName name =
+        dict.getOrDefault<Foam::fileName>("geometryDict", "constant/spoutedBed");
+    const Foam::fileName path = mesh.time().globalPath()/name;
+    if (!Foam::isFile(path))
+    {
+        throw InputError
+        (
+            file + ": key 'circulation/geometryDict' names '" + name
+          + "', which cannot be read (the draft-plate geometry, lengths in mm)"
+        );
+    }
+    Foam::IFstream stream(path);
+    const Foam::dictionary geometry(stream);
+    width = lengthEntry(geometry, name, "W");
+    depth = lengthEntry(geometry, name, "Lb");
+    const DraftPlateRegions regions
+    (
+        lengthEntry(geometry, name, "Wd"), lengthEntry(geometry, name, "He"),
+        lengthEntry(geometry, name, "Hd"), lengthEntry(geometry, name, "plateThickness"),
+        name
+    );
+    const double end = mesh.time().endTime().value();
+    return CirculationStatistics(regions, start, 0.5*(start + end), bin);
+}
+
+
+CirculationCoupling::CirculationCoupling
+(
+    const Foam::fvMesh& mesh,
+    const Foam::dictionary& couplingDict,
+    const Foam::surfaceScalarField& phi,
+    double rho
+)
+:
+    mesh_(mesh),
+    phi_(phi),
+    rho_(rho),
+    heatModel_(couplingDict.getOrDefault<Foam::word>("heatTransferModel", "none")),
+    stats_(settings(mesh, couplingDict, width_, depth_))
+{
+    findGasFaces();
+    resume();
+    const DraftPlateRegions& r = stats_.regions();
+    Foam::Info<< "Circulation: statistics from t = " << stats_.averageStart()
+        << " s, bins " << stats_.binWidth() << " s; spout |x| <= " << 0.5*r.Wd()
+        << " m, downcomers |x| >= " << 0.5*r.Wd() + r.plateThickness()
+        << " m, from z = " << r.He() << " to " << r.Hd() << " m; gas across "
+        << spoutFaces_.size() << " + " << downcomerFaces_.size()
+        << " faces of this rank at mid-plate height" << Foam::endl;
+}
+
+
+void CirculationCoupling::findGasFaces()
+{
+    // the horizontal internal faces of the plane nearest to mid-plate height
+    // from below (on a grid whose faces fall on He and Hd, mid-plate height
+    // can lie half-way between two planes): the same plane on every rank
+    const DraftPlateRegions& r = stats_.regions();
+    const double zMid = 0.5*(r.He() + r.Hd());
+    const Foam::vectorField& Cf = mesh_.faceCentres();
+    const Foam::vectorField& Sf = mesh_.faceAreas();
+    const auto horizontal = [&](Foam::label f)
+    {
+        return std::fabs(Sf[f].z()) >= 0.99*Foam::mag(Sf[f]);
+    };
+    double plane = -Foam::GREAT;
+    for (Foam::label f = 0; f < mesh_.nInternalFaces(); ++f)
+    {
+        if (horizontal(f) && Cf[f].z() <= zMid + 1e-9) plane = std::max(plane, Cf[f].z());
+    }
+    MPI_Allreduce(MPI_IN_PLACE, &plane, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+    gasHeight_ = plane;
+    for (Foam::label f = 0; f < mesh_.nInternalFaces(); ++f)
+    {
+        if (!horizontal(f) || std::fabs(Cf[f].z() - plane) > 1e-9) continue;
+        const double ax = std::fabs(Cf[f].x());
+        if (ax < 0.5*r.Wd()) spoutFaces_.push_back(f);
+        else if (ax > 0.5*r.Wd() + r.plateThickness()) downcomerFaces_.push_back(f);
+    }
+}
+
+
+void CirculationCoupling::sampleGas()
+{
+    // upward mass flows [kg/s]: the face flux along +z (its normal's sign)
+    const Foam::vectorField& Sf = mesh_.faceAreas();
+    double up[2] = {0, 0};
+    for (const Foam::label f : spoutFaces_) up[0] += phi_[f]*Foam::sign(Sf[f].z());
+    for (const Foam::label f : downcomerFaces_) up[1] += phi_[f]*Foam::sign(Sf[f].z());
+    const Foam::label inlet = mesh_.boundaryMesh().findPatchID("inlet");
+    double in = 0;
+    if (inlet >= 0) in = -Foam::sum(phi_.boundaryField()[inlet]);
+    gas_[0] += rho_*in;
+    gas_[1] += rho_*up[0];
+    gas_[2] += rho_*up[1];
+}
+
+
+ParticleSample CirculationCoupling::seen
+(
+    std::size_t k,
+    const Particle& p,
+    const ParticleCellMap& map,
+    const std::vector<double>& eps,
+    const ThermalCoupling* thermal,
+    const std::vector<double>& T,
+    const std::vector<double>& Y
+) const
+{
+    const ParticleCellMap::Row row = map.cells(k);
+    ParticleSample s;
+    s.voidage = weighted(row, eps);
+    if (!thermal) return s;
+    const HeatCellCoefficients& cells = thermal->cells();
+    s.slipRe = weighted(row, cells.reynolds);
+    s.h = weighted(row, cells.h);
+    if (!cells.km.empty()) s.km = weighted(row, cells.km);
+    s.Tgas = weighted(row, T);
+    if (!Y.empty()) s.Y = weighted(row, Y);
+    s.Tparticle = p.temperature;
+    return s;
+}
+
+
+void CirculationCoupling::sample
+(
+    const LiggghtsDem& dem,
+    const std::vector<Particle>& particles,
+    const ParticleCellMap& map,
+    const std::vector<double>& eps,
+    const FoamCellLocator& locator,
+    const ThermalCoupling* thermal
+)
+{
+    const Foam::Time& runTime = mesh_.time();
+    const double dt = runTime.deltaTValue();
+    const double t = double(runTime.timeIndex())*dt;
+    if (t < stats_.averageStart()) return;
+    const auto begin = std::chrono::steady_clock::now();
+    // the gas at the particles: collective, on every rank
+    std::vector<double> T, Y;
+    if (thermal) T = locator.withHalo(thermal->T().primitiveField());
+    if (thermal && thermal->Y()) Y = locator.withHalo(thermal->Y()->primitiveField());
+    const std::vector<double*> tracks = dem.circulationTracks();
+    for (std::size_t k = 0; k < particles.size(); ++k)
+    {
+        const Particle& p = particles[k];
+        maxStep_ = std::max(maxStep_, Foam::mag(Foam::vector(p.v.x, p.v.y, p.v.z))*dt);
+        stats_.observe(t, p.x, tracks[k], seen(k, p, map, eps, thermal, T, Y));
+    }
+    stats_.endSample(t);
+    sampleGas();
+    if (firstSample_ < 0) firstSample_ = t;
+    lastSample_ = t;
+    seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+    samples_ += 1;
+}
+
+
+std::vector<double> CirculationCoupling::packAll() const
+{
+    std::vector<double> all = stats_.pack();
+    all.insert(all.end(), {gas_[0], gas_[1], gas_[2], maxStep_, firstSample_, lastSample_});
+    return all;
+}
+
+
+void CirculationCoupling::unpackAll(const std::vector<double>& all)
+{
+    if (all.size() < extraWidth + 1)
+    {
+        throw InputError
+        (
+            "circulation state: a file of " + std::to_string(all.size())
+          + " values is too short"
+        );
+    }
+    const std::size_t n = all.size() - extraWidth;
+    stats_.unpack(std::vector<double>(all.begin(), all.begin() + n));
+    for (int i = 0; i < 3; ++i) gas_[i] = all[n + i];
+    maxStep_ = all[n + 3];
+    firstSample_ = all[n + 4];
+    lastSample_ = all[n + 5];
+}
+
+
+void CirculationCoupling::resume()
+{
+    // a restart: the master takes the run's totals back, the other ranks
+    // start from zero (as they do after every write time)
+    const Foam::Time& runTime = mesh_.time();
+    if (runTime.value() <= 0 || !Foam::Pstream::master()) return;
+    const Foam::fileName state =
+        runTime.globalPath()/"DEM"/("restart_" + runTime.timeName() + ".circulation");
+    std::ifstream in(state, std::ios::binary);
+    if (!in)
+    {
+        Foam::Info<< "Circulation: no statistics " << state << "; they start "
+            "afresh at this restart" << Foam::endl;
+        return;
+    }
+    std::vector<double> all;
+    double v;
+    while (in.read(reinterpret_cast<char*>(&v), sizeof v)) all.push_back(v);
+    try
+    {
+        unpackAll(all);
+    }
+    catch (const std::exception& e)
+    {
+        throw InputError
+        (
+            std::string(state) + ": not the circulation statistics this run "
+            "writes (" + e.what() + ")"
+        );
+    }
+}
+
+
+CirculationRun CirculationCoupling::runFacts
+(
+    const LiggghtsDem& dem,
+    const std::vector<Particle>& particles,
+    const ThermalCoupling* thermal
+) const
+{
+    double sums[3] = {double(particles.size()), 0, 0};   // n, sum d, sum V
+    for (const Particle& p : particles)
+    {
+        sums[1] += 2*p.radius;
+        sums[2] += p.volume();
+    }
+    const std::vector<double>* dry = thermal ? thermal->dryMass() : nullptr;
+    double dryMass = 0;
+    if (dry) for (const double m : *dry) dryMass += m;
+    double all[4] = {sums[0], sums[1], sums[2], dryMass};
+    MPI_Allreduce(MPI_IN_PLACE, all, 4, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+    CirculationRun run;
+    run.particles = all[0];
+    const double n = std::max(all[0], 1.0);
+    run.diameter = all[1]/n;
+    const double mass = dem.totalMass();
+    run.density = all[2] > 0 ? mass/all[2] : 0.0;
+    run.mass = dry ? all[3]/n : mass/n;
+    if (thermal)
+    {
+        run.inletTemperature = patchMean(mesh_, thermal->T(), "inlet");
+        if (thermal->Y())
+        {
+            const double Y = patchMean(mesh_, *thermal->Y(), "inlet");
+            run.inletHumidityRatio = Y/(1 - Y);
+        }
+    }
+    return run;
+}
+
+
+void CirculationCoupling::write
+(
+    const LiggghtsDem& dem,
+    const std::vector<Particle>& particles,
+    const ThermalCoupling* thermal,
+    bool stateFile
+)
+{
+    const CirculationRun run = runFacts(dem, particles, thermal);
+    // the sums to the master, which keeps the totals; the others go on
+    // from zero, so a restart (the totals back on the master) adds the same
+    unsigned long bins = stats_.bins();
+    MPI_Allreduce(MPI_IN_PLACE, &bins, 1, MPI_UNSIGNED_LONG, MPI_MAX, MPI_COMM_WORLD);
+    std::vector<double> all = stats_.pack(bins);
+    all.insert(all.end(), gas_, gas_ + 3);
+    // the visits open at the last sample (the boundary term of Little's law)
+    const std::array<double, nCirculationRegions> open =
+        lastSample_ < 0 ? std::array<double, nCirculationRegions>{}
+      : CirculationStatistics::openAtEnd
+        (
+            dem.circulationTracks(), lastSample_, mesh_.time().deltaTValue()
+        );
+    all.insert(all.end(), open.begin(), open.end());
+    std::vector<double> total(all.size());
+    MPI_Reduce(all.data(), total.data(), int(all.size()), MPI_DOUBLE, MPI_SUM, 0, MPI_COMM_WORLD);
+    MPI_Allreduce(MPI_IN_PLACE, &maxStep_, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+    if (!Foam::Pstream::master())
+    {
+        stats_.clear();
+        gas_[0] = gas_[1] = gas_[2] = 0;
+        return;
+    }
+    const auto tail = total.end() - nCirculationRegions;
+    std::copy(tail, total.end(), openEnd_.begin());
+    stats_.unpack(std::vector<double>(total.begin(), tail - 3));
+    std::copy(tail - 3, tail, gas_);
+    if (stateFile)
+    {
+        const Foam::Time& runTime = mesh_.time();
+        const std::string state =
+            runTime.globalPath()/"DEM"/("restart_" + runTime.timeName() + ".circulation");
+        const std::vector<double> values = packAll();
+        std::ofstream out(state, std::ios::binary);
+        out.write
+        (
+            reinterpret_cast<const char*>(values.data()),
+            std::streamsize(values.size()*sizeof(double))
+        );
+    }
+    writeJson(run);
+}
+
+
+std::string CirculationCoupling::runJson(const CirculationRun& run) const
+{
+    const DraftPlateRegions& r = stats_.regions();
+    const Foam::Time& runTime = mesh_.time();
+    const double n = std::max(stats_.sampleTimes(), 1.0);
+    const double us = gas_[0]/rho_/n/(width_*depth_);
+    std::ostringstream j;
+    j << "{\"case\": \"" << std::string(runTime.globalCaseName()) << "\", \"u_s\": " << number(us)
+      << ", \"particles\": " << number(run.particles) << ", \"particleDiameter\": " << number(run.diameter)
+      << ", \"particleDensity\": " << number(run.density) << ", \"particleMass\": " << number(run.mass)
+      << ", \"heatTransferModel\": \"" << heatModel_ << "\", \"inletTemperature\": "
+      << number(run.inletTemperature) << ", \"inletHumidityRatio\": " << number(run.inletHumidityRatio)
+      << ",\n    \"geometry\": {\"Wd\": " << number(r.Wd()) << ", \"He\": " << number(r.He())
+      << ", \"Hd\": " << number(r.Hd()) << ", \"plateThickness\": " << number(r.plateThickness())
+      << ", \"width\": " << number(width_) << ", \"depth\": " << number(depth_) << "},\n    "
+      << "\"timeStart\": " << number(firstSample_) << ", \"timeEnd\": " << number(lastSample_)
+      << ", \"samplingInterval\": " << number(runTime.deltaTValue()) << ", \"averageStart\": "
+      << number(stats_.averageStart()) << ", \"sampleTimes\": " << number(stats_.sampleTimes())
+      << ", \"window\": " << number(stats_.sampleTimes()*runTime.deltaTValue())
+      << ", \"maxStepDisplacement\": " << number(maxStep_) << ", \"skippedSamples\": "
+      << number(stats_.skippedSamples()) << "}";
+    return j.str();
+}
+
+
+std::string CirculationCoupling::residenceJson() const
+{
+    std::string all = "{", halves[2] = {"{", "{"};
+    for (int i = 0; i <= CirculationStatistics::cycle; ++i)
+    {
+        const ResidenceDistribution& d = stats_.residence(i);
+        const std::string key = (i ? ",\n    \"" : "\n    \"") + distributionName(i) + "\": ";
+        all += key + residenceEntry(d, stats_.binWidth());
+        for (int h = 0; h < 2; ++h) halves[h] += key + moments(d.halves[h]);
+    }
+    return "\"residence\": " + all + "},\n  \"halves\": {\"first\": " + halves[0]
+        + "},\n  \"second\": " + halves[1] + "}}";
+}
+
+
+std::string CirculationCoupling::conditionsJson() const
+{
+    static const char* const names[nSampleQuantities] =
+        {"voidage", "slipRe", "h", "km", "Tgas", "Y", "Tparticle"};
+    const double window = std::max(stats_.sampleTimes(), 1.0)*mesh_.time().deltaTValue();
+    std::string j = "\"conditions\": {";
+    for (int s = 0; s < nCirculationRegions; ++s)
+    {
+        j += std::string(s ? "," : "") + "\n    \"" + circulationRegionName(s) + "\": {\"holdup\": "
+            + number(stats_.holdup(s));
+        for (int q = 0; q < nSampleQuantities; ++q)
+        {
+            j += std::string(", \"") + names[q] + "\": " + number(stats_.meanSeen(s, q));
+        }
+        const double Y = stats_.meanSeen(s, 5);
+        j += ", \"humidityRatio\": " + number(Y/(1 - Y)) + ", \"entries\": "
+            + number(stats_.entries(s)) + ", \"entryRate\": " + number(stats_.entries(s)/window)
+            + ", \"occupancy\": " + number(stats_.holdup(s)*window) + ", \"completed\": "
+            + number(stats_.residence(s).all.sum) + ", \"openAtStart\": "
+            + number(stats_.openAtStart(s)) + ", \"openAtEnd\": " + number(openEnd_[s]) + "}";
+    }
+    return j + "}";
+}
+
+
+void CirculationCoupling::writeJson(const CirculationRun& run) const
+{
+    const double n = std::max(stats_.sampleTimes(), 1.0);
+    const double window = n*mesh_.time().deltaTValue();
+    const double in = gas_[0]/n;
+    const auto share = [&](double sum) { return in != 0 ? sum/n/in : 0.0; };
+    std::ostringstream j;
+    j << "{\n  \"format\": \"spoutlab-circulation 1\",\n  \"run\": " << runJson(run)
+      << ",\n  \"regions\": [\"spout\", \"fountain\", \"downcomer\", \"entrainment\"],\n  "
+      << residenceJson() << ",\n  " << conditionsJson() << ",\n  \"gas\": {\"inletMassFlow\": "
+      << number(in) << ", \"height\": " << number(gasHeight_) << ", \"spoutShare\": "
+      << number(share(gas_[1])) << ", \"downcomerShare\": "
+      << number(share(gas_[2])) << "},\n  \"circulationRate\": "
+      << number(stats_.entries(spoutRegion)/window*run.mass) << "\n}\n";
+    const std::string path = mesh_.time().globalPath()/"circulation.json";
+    {
+        std::ofstream out(path + ".tmp");
+        out << j.str();
+        if (!out.flush()) throw InputError("cannot write " + path + ".tmp");
+    }
+    if (std::rename((path + ".tmp").c_str(), path.c_str()) != 0)
+    {
+        throw InputError("cannot rename " + path + ".tmp to circulation.json");
+    }
+}
+
+
+void CirculationCoupling::report() const
+{
+    double cost[2] = {seconds_, samples_};
+    MPI_Allreduce(MPI_IN_PLACE, cost, 2, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+    Foam::Info<< "Circulation: " << cost[1] << " sampling times, "
+        << 1e3*cost[0]/std::max(cost[1], 1.0) << " ms each (the slowest rank), "
+        << cost[0] << " s in all" << Foam::endl;
+}
+
+} // namespace spoutlab

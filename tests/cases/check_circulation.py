@@ -1,0 +1,82 @@
+#!/usr/bin/env python3
+"""check_circulation.py WHOLE KILLED: the circulation statistics of
+spoutedBedCirculation's two runs (uninterrupted and killed + restarted).
+
+  schema          circulation.json holds every key of the format, the
+                  histograms add up to their samples
+  holdups         every particle is in one state at every sampling time:
+                  the holdups add up to the particles (1e-9)
+  dense sampling  no sample found a particle two regions ahead of its state,
+                  and the largest step |v| dt is under a tenth of the
+                  narrowest region (the spout's half-width)
+  Little's law    per state, over the window with its boundary terms:
+                  holdup x window = completed residences + the incomplete
+                  first visits + the visits open at the end, to the 10
+                  digits of the file (1e-8): each sample of a particle is
+                  one sampling interval of exactly one visit, so a state
+                  machine that loses or double-counts time fails it.  The
+                  stationary form, 1 - rate x mean residence / holdup, is
+                  printed beside it with what a stationary bed would give
+                  over this window (spoutlab.circulationstats.littles_law):
+                  a 0.9 s window is short beside the slow states' visits
+  restart         the restarted run's statistics equal the uninterrupted
+                  run's: the binary state at the end bit for bit,
+                  circulation.json as text
+"""
+import os
+import sys
+
+from spoutlab import circulationstats as cs
+
+whole, killed = sys.argv[1:3]
+failures = []
+
+
+def check(name, ok, detail=''):
+    print('%-58s %s %s' % (name, 'PASS' if ok else 'FAIL', detail))
+    if not ok:
+        failures.append(name)
+
+
+try:
+    stats = cs.read(os.path.join(whole, 'circulation.json'))
+    check('schema of circulation.json', True)
+except (OSError, ValueError) as e:
+    check('schema of circulation.json', False, str(e))
+    sys.exit(1)
+run = stats['run']
+total = sum(stats['conditions'][s]['holdup'] for s in cs.REGIONS)
+check('holdups add up to the particles', abs(total - run['particles']) <= 1e-9 * run['particles'],
+      '%.10g of %d' % (total, run['particles']))
+step, half = run['maxStepDisplacement'], run['geometry']['Wd'] / 2
+check('no region skipped between two samples', run['skippedSamples'] == 0,
+      '%d samples' % run['skippedSamples'])
+check('largest step under a tenth of the spout half-width', step < 0.1 * half,
+      '%.3g mm against %.3g mm' % (1e3 * step, 1e3 * half))
+checked = 0
+for s in cs.REGIONS:
+    occupied, visits = cs.boundary_terms(stats, s)
+    law = cs.littles_law(stats, s)
+    checked += 1
+    check("Little's law with its boundary terms, " + s,
+          abs(occupied - visits) <= 1e-8 * max(occupied, 1e-30),
+          'holdup x window %.8g, visits %.8g particle s; stationary form %s'
+          % (occupied, visits, '1 - rate W/L %.3f (a stationary bed: %.3f +- %.3f)' % law
+             if law else 'no completed visits'))
+check("Little's law checked in every state", checked == 4, '%d' % checked)
+for k in cs.DISTRIBUTIONS:
+    h = cs.halves_agreement(stats, k)
+    if h:
+        print('%-58s info %.3g s apart, %.1f standard errors' % ('halves, ' + k, h[0],
+                                                               abs(h[0]) / h[1] if h[1] else 0))
+
+end = '%g' % round(run['timeEnd'], 6)
+states = [open(os.path.join(c, 'DEM', 'restart_%s.circulation' % end), 'rb').read()
+          for c in (whole, killed)]
+check('restart: the state at %s s bit for bit' % end, states[0] == states[1],
+      '%d bytes' % len(states[0]))
+texts = [open(os.path.join(c, 'circulation.json')).read().replace('"case": "killed"', '"case": "whole"')
+         for c in (whole, killed)]
+check('restart: circulation.json the same', texts[0] == texts[1])
+print('spoutedBedCirculation: %s' % ('FAILED: ' + ', '.join(failures) if failures else 'all checks pass'))
+sys.exit(1 if failures else 0)
