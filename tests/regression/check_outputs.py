@@ -241,9 +241,15 @@ def check(reference, run_dir, update=False, out=sys.stdout):
     return status
 
 
+class Parser(argparse.ArgumentParser):
+    def error(self, message):
+        """A bad command line is one line."""
+        self.exit(2, '%s: %s (see --help)\n' % (self.prog, message))
+
+
 def main(argv=None):
-    parser = argparse.ArgumentParser(
-        prog='check_outputs.py', description=__doc__.split('\n\n')[0],
+    parser = Parser(
+        prog='check_outputs.py', description=__doc__,
         formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument('--update', action='store_true',
                         help='rewrite the reference values from the run')

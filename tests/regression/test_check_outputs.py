@@ -3,7 +3,8 @@
 tolerance it passes, a drifted value fails with DRIFT on its line, a number
 that cannot be read fails, --update rewrites only the values (sources,
 tolerances and notes kept; a second update changes no byte), and a
-reference without a tolerance's reason is refused with one line."""
+reference without a tolerance's reason, or a bad command line, is refused
+with one line."""
 import json
 import os
 import subprocess
@@ -170,6 +171,13 @@ class CheckOutputs(unittest.TestCase):
         self.assertEqual(len(err.strip().splitlines()), 1, err)
         self.assertIn('"mean dP from 1 s": no "why"', err)
         self.assertIn('demo.json', err)
+
+    def test_bad_command_line_is_one_line(self):
+        for args in (['--bogus'], ['only-one-argument']):
+            result = subprocess.run([sys.executable, SCRIPT, *args],
+                                    capture_output=True, text=True)
+            self.assertEqual(result.returncode, 2)
+            self.assertEqual(len(result.stderr.strip().splitlines()), 1, result.stderr)
 
 
 if __name__ == '__main__':
