@@ -153,28 +153,27 @@ class DryingBedSolution:
         return lost, p['rho_g'] * p['u_s'] * out + holdup
 
 
-def solve(layers, t_end, *, u_s, d, rho_d, c_d, rho_g, cp_air, T0, Y0, X0, Tin, Yin,
-          p=ma.ATMOSPHERE, resolution=20, wet_bulb=None):
-    """Numerical solution of the model for layers [(thickness, eps, h, k_m),
-    ...] from the bottom up, up to time t_end.  T0, Y0: the gas and kernels
-    at the start (Y0 saturated at T0 for wet kernels, else nothing is in
-    equilibrium; at most saturated for dry ones); X0 the kernels' moisture;
-    Tin, Yin the inlet gas; p the total pressure.
-    wet_bulb: the kernels' temperature while they dry, for the step size
-    (default: the film wet bulb of the inlet gas in the first layer)."""
+def check_initial_gas(T0, Y0, X0, p):
+    """The initial gas saturated at T0 for wet kernels, at most saturated
+    for dry ones (else nothing starts in equilibrium)."""
     rho_w0 = ma.saturation_vapour_density(T0)
     rho_v0 = ma.vapour_density(T0, ma.ratio_of_mass_fraction(Y0), p)
     if (X0 > 0 and abs(rho_w0 - rho_v0) > 1e-9 * rho_w0) or rho_v0 > rho_w0 * (1 + 1e-9):
         raise ValueError('packedbeddrying.solve: the initial gas must be saturated at T0 '
                          '(at most, for dry kernels), got a relative humidity of %.9f'
                          % (rho_v0 / rho_w0))
+
+
+def retarded_grid(layers, t_end, resolution, *, u_s, d, rho_d, c_d, rho_g, cp_air, T0, Tin,
+                  wet_bulb, p):
+    """The grid of the characteristics: the faces z and their gas transit
+    times tau, cells per layer from the shortest gas exchange length (each
+    cell's layer in cells), and the retarded times s, steps from the fastest
+    kernel (its heat and, near T_wet, its latent heat)."""
     six_d = 6.0 / d
     flow = rho_g * u_s
-    if wet_bulb is None:
-        wet_bulb = film_wet_bulb(Tin, Yin, layers[0][2], layers[0][3], p)
     T_wet = max(T0, wet_bulb) + 5.0
     rho_ideal = p / (ma.R_AIR * min(T0, Tin, wet_bulb))
-    # the grid: cells per layer from the shortest gas exchange length
     faces, tau, cells = [0.0], [0.0], []
     kernel_rate = 0.0
     for i, (thickness, eps, h, km) in enumerate(layers):
@@ -188,51 +187,61 @@ def solve(layers, t_end, *, u_s, d, rho_d, c_d, rho_g, cp_air, T0, Y0, X0, Tin, 
         if eps < 1:
             kernel_rate = max(kernel_rate, six_d / rho_d * (
                 h + km * ma.latent_heat(T_wet) * ma.saturation_vapour_density_slope(T_wet)) / c_d)
-    z, tau, cells = np.array(faces), np.array(tau), np.array(cells)
     steps = max(4, int(math.ceil(resolution * kernel_rate * t_end)))
     s = np.linspace(0.0, t_end, steps + 1)
-    ds = s[1] - s[0]
-    nc = len(cells)
-    dz = np.diff(z)
-    lay = np.array(layers, float)
-    eps_c = lay[cells, 1]
-    aH = (1 - eps_c) * six_d * lay[cells, 2] / flow * dz      # per cell, x (T_p - T_g)
-    aY = (1 - eps_c) * six_d * lay[cells, 3] / flow * dz      # x (rho_sat - rho_v)
-    bH = six_d * lay[cells, 2] / rho_d                         # kernel, per second
-    bY = six_d * lay[cells, 3] / rho_d
+    return np.array(faces), np.array(tau), np.array(cells), s
 
-    Tg = np.empty((nc + 1, steps + 1))
-    Yg = np.empty((nc + 1, steps + 1))
-    Tp = np.empty((nc, steps + 1))
-    X = np.empty((nc, steps + 1))
-    Tg[0], Yg[0] = Tin, Yin
-    Tp[:, 0], X[:, 0] = T0, X0
 
-    def film(Tk, Tgas, Ygas, wet):
+class _CellExchange:
+    """The exchange of the grid's cells: the gas across a cell (midpoint
+    rule) and the kernels' rates, with the film coefficients of each
+    cell's layer."""
+
+    def __init__(self, layers, cells, dz, *, u_s, d, rho_d, c_d, rho_g, cp_air, p):
+        six_d = 6.0 / d
+        flow = rho_g * u_s
+        lay = np.array(layers, float)
+        self.eps = lay[cells, 1]
+        self.aH = (1 - self.eps) * six_d * lay[cells, 2] / flow * dz   # per cell, x (T_p - T_g)
+        self.aY = (1 - self.eps) * six_d * lay[cells, 3] / flow * dz   # x (rho_sat - rho_v)
+        self.bH = six_d * lay[cells, 2] / rho_d                        # kernel, per second
+        self.bY = six_d * lay[cells, 3] / rho_d
+        self.c_d, self.cp_air, self.p = c_d, cp_air, p
+
+    def film(self, Tk, Tgas, Ygas, wet):
         """The free-water rate per unit surface and film coefficient,
         rho_v,sat(T_p) - rho_v(T_g, W); nothing leaves a dry kernel."""
         r = ma.saturation_vapour_density(Tk) - ma.vapour_density(
-            Tgas, ma.ratio_of_mass_fraction(Ygas), p)
+            Tgas, ma.ratio_of_mass_fraction(Ygas), self.p)
         return np.where(wet | (r < 0), r, 0.0)
 
-    def gas_out(c, T_in, Y_in, T_out, Y_out, Tk, wet):
+    def gas_out(self, c, T_in, Y_in, T_out, Y_out, Tk, wet):
         """The gas leaving cell c (midpoint rule), from its inflow, a guess of
         its outflow and the kernels."""
+        cp_air, aH, aY = self.cp_air, self.aH, self.aY
         e_in = ma.humid_heat_capacity(Y_in, cp_air) * T_in
         for _ in range(ITERATIONS):
             Tm, Ym = 0.5 * (T_in + T_out), 0.5 * (Y_in + Y_out)
-            r = film(Tk, Tm, Ym, wet)
+            r = self.film(Tk, Tm, Ym, wet)
             Y_out = Y_in + aY[c] * r
             e_out = e_in + aH[c] * (Tk - Tm) + ma.CP_VAPOUR * Tk * aY[c] * r
             T_out = e_out / ma.humid_heat_capacity(Y_out, cp_air)
         return T_out, Y_out
 
-    def kernel_rates(c, Tk, Xk, wet, Tm, Ym):
+    def kernel_rates(self, c, Tk, Xk, wet, Tm, Ym):
         """dT_p/ds without and with only the latent heat, and dX/ds."""
-        r = film(Tk, Tm, Ym, wet)
-        cap = c_d + Xk * ma.CP_WATER
-        return bH[c] * (Tm - Tk) / cap, -ma.latent_heat(Tk) * bY[c] * r / cap, -bY[c] * r
+        r = self.film(Tk, Tm, Ym, wet)
+        cap = self.c_d + Xk * ma.CP_WATER
+        return (self.bH[c] * (Tm - Tk) / cap, -ma.latent_heat(Tk) * self.bY[c] * r / cap,
+                -self.bY[c] * r)
 
+
+def march(exchange, Tg, Yg, Tp, X, ds):
+    """Fill the tables diagonal by diagonal (k = cell + step): each cell's
+    gas from its inflow and its kernels from their previous step (the
+    trapezoidal rule, iterated with the gas); the inlet row Tg[0], Yg[0]
+    and the kernels' first step Tp[:, 0], X[:, 0] given."""
+    nc, steps = Tp.shape[0], Tp.shape[1] - 1
     for k in range(nc + steps):
         c = np.arange(max(0, k - steps), min(nc - 1, k) + 1)
         n = k - c
@@ -246,13 +255,13 @@ def solve(layers, t_end, *, u_s, d, rho_d, c_d, rho_g, cp_air, T0, Y0, X0, Tin, 
         Y_out = np.where(first, Y_in, Yg[c + 1, old])
         Tm0 = 0.5 * (Tg[c, old] + T_out)
         Ym0 = 0.5 * (Yg[c, old] + Y_out)
-        h0, l0, x0 = kernel_rates(c, Tk0, Xk0, wet0, Tm0, Ym0)
+        h0, l0, x0 = exchange.kernel_rates(c, Tk0, Xk0, wet0, Tm0, Ym0)
         Tk = np.where(first, Tk0, Tk0 + ds * (h0 + l0))
         Xk = np.where(first, Xk0, np.where(wet0, np.maximum(Xk0 + ds * x0, 0.0), Xk0 + ds * x0))
         for _ in range(ITERATIONS):
-            T_out, Y_out = gas_out(c, T_in, Y_in, T_out, Y_out, Tk, Xk > 0)
+            T_out, Y_out = exchange.gas_out(c, T_in, Y_in, T_out, Y_out, Tk, Xk > 0)
             Tm, Ym = 0.5 * (T_in + T_out), 0.5 * (Y_in + Y_out)
-            h1, l1, x1 = kernel_rates(c, Tk, Xk, wet0, Tm, Ym)
+            h1, l1, x1 = exchange.kernel_rates(c, Tk, Xk, wet0, Tm, Ym)
             loss = -0.5 * ds * (x0 + x1)
             # a kernel drying out within the step loses exactly its water
             out = wet0 & (loss >= Xk0)
@@ -261,6 +270,32 @@ def solve(layers, t_end, *, u_s, d, rho_d, c_d, rho_g, cp_air, T0, Y0, X0, Tin, 
             Tk = np.where(first, Tk0, Tk0 + 0.5 * ds * (h0 + h1 + share * (l0 + l1)))
         Tp[c, n], X[c, n] = Tk, Xk
         Tg[c + 1, n], Yg[c + 1, n] = T_out, Y_out
+
+
+def solve(layers, t_end, *, u_s, d, rho_d, c_d, rho_g, cp_air, T0, Y0, X0, Tin, Yin,
+          p=ma.ATMOSPHERE, resolution=20, wet_bulb=None):
+    """Numerical solution of the model for layers [(thickness, eps, h, k_m),
+    ...] from the bottom up, up to time t_end.  T0, Y0: the gas and kernels
+    at the start (Y0 saturated at T0 for wet kernels, else nothing is in
+    equilibrium; at most saturated for dry ones); X0 the kernels' moisture;
+    Tin, Yin the inlet gas; p the total pressure.
+    wet_bulb: the kernels' temperature while they dry, for the step size
+    (default: the film wet bulb of the inlet gas in the first layer)."""
+    check_initial_gas(T0, Y0, X0, p)
+    if wet_bulb is None:
+        wet_bulb = film_wet_bulb(Tin, Yin, layers[0][2], layers[0][3], p)
+    kernel = dict(u_s=u_s, d=d, rho_d=rho_d, c_d=c_d, rho_g=rho_g, cp_air=cp_air, p=p)
+    z, tau, cells, s = retarded_grid(layers, t_end, resolution, T0=T0, Tin=Tin,
+                                     wet_bulb=wet_bulb, **kernel)
+    exchange = _CellExchange(layers, cells, np.diff(z), **kernel)
+    nc, steps = len(cells), len(s) - 1
+    Tg = np.empty((nc + 1, steps + 1))
+    Yg = np.empty((nc + 1, steps + 1))
+    Tp = np.empty((nc, steps + 1))
+    X = np.empty((nc, steps + 1))
+    Tg[0], Yg[0] = Tin, Yin
+    Tp[:, 0], X[:, 0] = T0, X0
+    march(exchange, Tg, Yg, Tp, X, s[1] - s[0])
     props = dict(u_s=u_s, d=d, rho_d=rho_d, c_d=c_d, rho_g=rho_g, cp_air=cp_air, p=p,
-                 Tin=Tin, Yin=Yin, eps_cells=eps_c)
+                 Tin=Tin, Yin=Yin, eps_cells=exchange.eps)
     return DryingBedSolution(z, s, tau, Tg, Yg, Tp, X, (T0, Y0, X0), props)

@@ -184,18 +184,17 @@ def reported(fmt, value):
     return float(fmt % value)
 
 
-def report(o, done, g):
-    n = int(g.particles['nParticles'])
-    Hb, eps = spoutedbed.settled_bed(g, 'particles/particles_0.vtp')
-    paper = PAPER.get((o['vessel'], n))
+def write_steps(done):
+    """ums.csv: one row per finished step."""
     with open('ums.csv', 'w') as f:
         f.write('superficial velocity [m/s],branch,pressure drop [Pa],'
                 'solid flux on the spout axis [m/s],spouts (classifier)\n')
         for s in done:
             f.write('%.4g,%s,%.6g,%.6g,%d\n' % (s.u, s.branch, s.dp, s.flux, s.spouts))
-    packed, down, up = branch(done, 'packed'), branch(done, 'down'), branch(done, 'up')
-    shown = [s for s in done if s.branch != 'spinup']
-    vessel = 'draft plates' if g.plates else 'no draft plates'
+
+
+def settings_lines(o, n, Hb, vessel, packed, down, up):
+    """The report's first two lines: the bed and the schedule as run."""
     if packed:
         how = 'from %g m/s up to %g on the settled bed' % (packed[0][0], packed[-1][0])
         how += ', then down to %g' % down[-1][0] if down else ''
@@ -203,41 +202,41 @@ def report(o, done, g):
         how = 'after a spin-up at %g m/s for %g s, from %g m/s down to %g' % (
             o['kick'], o['spinup'], down[0][0], down[-1][0])
     how += ' and back up to %g' % up[-1][0] if up else ''
-    lines = ['minimum spouting velocity protocol (%d particles, settled bed %.3f m, %s)'
-             % (n, Hb, vessel),
-             'steps %s by %g m/s, %g s each, pressure drop averaged over the last %g s, '
-             'spouts or not by the spout classifier over the same window'
-             % (how, o['step'], o['hold'], o['average']),
-             '', '%8s %6s %12s %16s %7s  %s' % ('u_s', 'branch', 'dP [Pa]', 'spout flux [m/s]',
+    return ['minimum spouting velocity protocol (%d particles, settled bed %.3f m, %s)'
+            % (n, Hb, vessel),
+            'steps %s by %g m/s, %g s each, pressure drop averaged over the last %g s, '
+            'spouts or not by the spout classifier over the same window'
+            % (how, o['step'], o['hold'], o['average'])]
+
+
+def steps_table(shown):
+    """The table of the steps, a blank line before and after."""
+    lines = ['', '%8s %6s %12s %16s %7s  %s' % ('u_s', 'branch', 'dP [Pa]', 'spout flux [m/s]',
                                                 'spouts', 'classifier')]
     lines += ['%8.3f %6s %12.0f %16.4g %7s  %s' % (s.u, s.branch, s.dp, s.flux,
                                                    'yes' if s.spouts else 'no',
                                                    s.verdict.describe()) for s in shown]
     lines.append('')
-    # the numbers of the report as it prints them, for protocols/results (ums.json)
-    numbers = {'particles': n, 'bed_height_m': reported('%.3f', Hb), 'plates': g.plates,
-               'settings': '; '.join(lines[:2]),
-               'cores': [[reported('%.3f', s.u), s.branch, reported('%.2f', s.verdict.core_ratio)]
-                         for s in shown if s.verdict.snapshots
-                         and not math.isnan(s.verdict.core_ratio)]}
-    ref = ' (paper: %g m/s, %.2f kPa)' % paper if paper else ''
-    if packed:
-        u_peak, dp_peak, u_b, dp_b = spoutingloop.break_through(packed)
-        numbers['peak'] = {'dP_Pa': reported('%.0f', dp_peak), 'u_m_s': reported('%.3f', u_peak)}
-        numbers['break_through_m_s'] = None if u_b is None else reported('%.3f', u_b)
-        if u_b is None:
-            lines.append('the bed does not spout at any u_s up to %.3f m/s (highest tried); '
-                         'peak dP %.0f Pa at %.3f m/s' % (packed[-1][0], dp_peak, u_peak))
-        else:
-            lines.append('packed bed: dP peaks at %.0f Pa at %.3f m/s; the spout breaks '
-                         'through at %.3f m/s (dP %.0f Pa, %+.0f %% of the peak)'
-                         % (dp_peak, u_peak, u_b, dp_b, 100 * (dp_b / dp_peak - 1)))
-    # the hysteresis compares the rise with the steps taken on the way down;
-    # u_ms is read from the whole decreasing branch, which begins at the top
-    # of the rise, where the bed spouts
-    loop = spoutingloop.hysteresis(packed, down)
-    if packed and down:
-        down = packed[-1:] + down
+    return lines
+
+
+def packed_branch(packed, lines, numbers):
+    """The increasing branch from the packed bed: its peak and the break-through."""
+    u_peak, dp_peak, u_b, dp_b = spoutingloop.break_through(packed)
+    numbers['peak'] = {'dP_Pa': reported('%.0f', dp_peak), 'u_m_s': reported('%.3f', u_peak)}
+    numbers['break_through_m_s'] = None if u_b is None else reported('%.3f', u_b)
+    if u_b is None:
+        lines.append('the bed does not spout at any u_s up to %.3f m/s (highest tried); '
+                     'peak dP %.0f Pa at %.3f m/s' % (packed[-1][0], dp_peak, u_peak))
+    else:
+        lines.append('packed bed: dP peaks at %.0f Pa at %.3f m/s; the spout breaks '
+                     'through at %.3f m/s (dP %.0f Pa, %+.0f %% of the peak)'
+                     % (dp_peak, u_peak, u_b, dp_b, 100 * (dp_b / dp_peak - 1)))
+
+
+def minimum_spouting(down, ref, lines, numbers):
+    """u_ms from the classifier on the decreasing branch (or its bound), and
+    from dP alone; returns the classifier's (u_ms, dP_ms, dP below) or None."""
     ms = spoutingloop.minimum_spouting(down)
     if ms:
         numbers['u_ms'] = {'u_m_s': reported('%.3f', ms[0]), 'dP_Pa': reported('%.0f', ms[1]),
@@ -259,11 +258,11 @@ def report(o, done, g):
         lines.append('u_ms by dP alone = %.3f m/s, dP_ms = %.0f Pa%s: the step before dP\'s '
                      'steepest rise on the decreasing branch, to %.0f Pa one step below'
                      % (rise[0], rise[1], ref, rise[2]))
-    if loop is not None:
-        numbers['hysteresis_Pa'] = reported('%.0f', loop)
-        lines.append('hysteresis = %.0f Pa: the increasing branch\'s peak dP minus the '
-                     'decreasing branch\'s dP at %.3f m/s'
-                     % (loop, spoutingloop.break_through(packed)[0]))
+    return ms
+
+
+def spout_reforms(up, ms, lines, numbers):
+    """Raising u_s again after the collapse: where the spout re-forms."""
     back = spoutingloop.spout_reforms(up)
     if back:
         above = ms is not None and back[0] > ms[0] + 1e-6
@@ -275,6 +274,11 @@ def report(o, done, g):
     elif up:
         lines.append('increasing u_s again: the spout did not re-form up to %.3f m/s'
                      % up[-1][0])
+
+
+def correlations(g, Hb, eps, lines, numbers):
+    """Ergun's u_mf (Wen and Yu's form, and at the settled voidage) and, with
+    plates, Kudra's u_ms for this bed."""
     rho = g.gas['rho']
     p = g.particles
     umf = spoutcorrelations.ergun_umf(p['dp'] / 1000, p['rhop'], rho, g.gas['mu'])
@@ -291,14 +295,10 @@ def report(o, done, g):
         lines.append("Kudra's eq 12 scaled to this geometry and bed height: %.3f m/s; evaluated "
                      "directly: %.3f m/s (eq 13 as the paper evaluates it: 1.20 kPa)"
                      % (spoutcorrelations.kudra_ums(g, Hb), spoutcorrelations.kudra_eq12(g, Hb)))
-    lines.append('flow patterns at the end of each step (Fig 3): '
-                 + ' '.join(snapshots(g, shown)))
-    text = '\n'.join(lines) + '\n'
-    sys.stdout.write(text)
-    open('ums.txt', 'w').write(text)
-    with open('ums.json', 'w') as f:
-        json.dump(numbers, f, indent=1)
-        f.write('\n')
+
+
+def plot_loop(vessel, n, paper):
+    """ums.png: the pressure-drop loop of Fig 2, the paper's point if known."""
     mark = (',\\\n     "<echo %g,%g" using 1:2 with points pt 9 ps 2 title "paper: u_{ms}, dP_{ms}"'
             % paper) if paper else ''
     sc.plot('ums.png', '''
@@ -312,6 +312,51 @@ plot "ums.csv" skip 1 using 1:(strcol(2) eq "packed" ? $3/1000 : 1/0) with lines
      "ums.csv" skip 1 using 1:(strcol(2) eq "down" ? $3/1000 : 1/0) with linespoints pt 7 title "decreasing u_s", \\
      "ums.csv" skip 1 using 1:(strcol(2) eq "up" ? $3/1000 : 1/0) with linespoints pt 5 title "increasing u_s again"%s
 ''' % (vessel, n, mark))
+
+
+def report(o, done, g):
+    """ums.csv, ums.txt (also printed), ums.json and ums.png from the
+    finished steps, and a snapshot at the end of each."""
+    n = int(g.particles['nParticles'])
+    Hb, eps = spoutedbed.settled_bed(g, 'particles/particles_0.vtp')
+    paper = PAPER.get((o['vessel'], n))
+    write_steps(done)
+    packed, down, up = branch(done, 'packed'), branch(done, 'down'), branch(done, 'up')
+    shown = [s for s in done if s.branch != 'spinup']
+    vessel = 'draft plates' if g.plates else 'no draft plates'
+    lines = settings_lines(o, n, Hb, vessel, packed, down, up) + steps_table(shown)
+    # the numbers of the report as it prints them, for protocols/results (ums.json)
+    numbers = {'particles': n, 'bed_height_m': reported('%.3f', Hb), 'plates': g.plates,
+               'settings': '; '.join(lines[:2]),
+               'cores': [[reported('%.3f', s.u), s.branch, reported('%.2f', s.verdict.core_ratio)]
+                         for s in shown if s.verdict.snapshots
+                         and not math.isnan(s.verdict.core_ratio)]}
+    ref = ' (paper: %g m/s, %.2f kPa)' % paper if paper else ''
+    if packed:
+        packed_branch(packed, lines, numbers)
+    # the hysteresis compares the rise with the steps taken on the way down;
+    # u_ms is read from the whole decreasing branch, which begins at the top
+    # of the rise, where the bed spouts
+    loop = spoutingloop.hysteresis(packed, down)
+    if packed and down:
+        down = packed[-1:] + down
+    ms = minimum_spouting(down, ref, lines, numbers)
+    if loop is not None:
+        numbers['hysteresis_Pa'] = reported('%.0f', loop)
+        lines.append('hysteresis = %.0f Pa: the increasing branch\'s peak dP minus the '
+                     'decreasing branch\'s dP at %.3f m/s'
+                     % (loop, spoutingloop.break_through(packed)[0]))
+    spout_reforms(up, ms, lines, numbers)
+    correlations(g, Hb, eps, lines, numbers)
+    lines.append('flow patterns at the end of each step (Fig 3): '
+                 + ' '.join(snapshots(g, shown)))
+    text = '\n'.join(lines) + '\n'
+    sys.stdout.write(text)
+    open('ums.txt', 'w').write(text)
+    with open('ums.json', 'w') as f:
+        json.dump(numbers, f, indent=1)
+        f.write('\n')
+    plot_loop(vessel, n, paper)
 
 
 def main(argv):
