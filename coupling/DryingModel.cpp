@@ -17,6 +17,11 @@ DryingModel::DryingModel(std::unique_ptr<SorptionIsotherm> isotherm) : isotherm_
 
 DryingModel::~DryingModel() = default;
 
+bool DryingModel::needsGas(const double*) const
+{
+    return true;
+}
+
 int DryingModel::stateSize() const
 {
     return 0;

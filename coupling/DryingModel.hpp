@@ -75,6 +75,13 @@ public:
                                          const MoistAir& air, double massTransferCoefficient, double dt,
                                          double& latentHeat) const;
 
+    // Whether the next advance() of this state uses the gas, k_m and T_p
+    // (true unless the model says otherwise). Where it does not (a step
+    // inside a kernelSteps block of KernelDiffusion, which only releases the
+    // block's water), the caller may skip gathering the gas and hand any
+    // finite air and k_m = 0: the same water, state and latent heat.
+    virtual bool needsGas(const double* state) const;
+
     // Heat the kernel gives up per kg of water evaporated [J/kg]: the grain's
     // heat of vaporisation at the moisture where the water leaves
     // (SorptionIsotherm::latentHeat), free water's for freeWater.

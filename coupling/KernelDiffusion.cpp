@@ -107,6 +107,7 @@ KernelDiffusion::KernelDiffusion(const Parameters& props)
     if (blocks < 1 || blocks > 1000)
         throw props.badValue("kernelSteps", "a number of coupling steps from 1 to 1000");
     kernelSteps_ = static_cast<int>(blocks);
+    offset_ = kernelSteps_ > 1 ? 2 : 0;
     // faces s_i = r_i/R, volume fractions and volume centroids of the shells
     std::vector<double> face(n + 1), centroid(n);
     for (long i = 0; i <= n; ++i)
@@ -177,8 +178,9 @@ void KernelDiffusion::modes(int n)
     }
 }
 
-void KernelDiffusion::shellMoistures(const double* state, double* shells) const
+void KernelDiffusion::shellMoistures(const double* full, double* shells) const
 {
+    const double* state = full + offset_;
     const int n = this->shells();
     for (int i = 0; i < n; ++i)
     {
@@ -198,8 +200,8 @@ void KernelDiffusion::initialise(double moisture, double* state) const
 {
     // uniform: mode 0 alone
     std::fill(state, state + stateSize(), 0.0); // and no block under way
-    state[0] = moisture;
-    state[shells()] = moisture;
+    state[offset_] = moisture;
+    state[offset_ + shells()] = moisture;
 }
 
 // X_s with the outer shell at P + Q j and j = g_s (Y_N-1 - X_s): eliminating
@@ -296,9 +298,10 @@ KernelDiffusion::Surface surfaceOf(const Kernel& kernel, const MoistAir& air, do
 
 } // namespace
 
-double KernelDiffusion::rate(const Kernel& kernel, double, const double* state, const MoistAir& air,
+double KernelDiffusion::rate(const Kernel& kernel, double, const double* full, const MoistAir& air,
                              double massTransferCoefficient) const
 {
+    const double* state = full + offset_;
     const int n = shells();
     const double d = diffusivity(kernel.temperature);
     const Surface s = surfaceOf(kernel, air, massTransferCoefficient, d);
@@ -325,19 +328,27 @@ double KernelDiffusion::advanceWithLatentHeat(const Kernel& kernel, double& mois
     if (kernelSteps_ == 1)
         return step(kernel, moisture, state, air, massTransferCoefficient, dt, &latentHeat);
     checkStep(moisture, massTransferCoefficient, dt);
-    const int n = shells();
-    double& left = state[n + 1];
+    // state: the calls left in the block, its latent heat, then the kernel
+    double& left = state[0];
     if (left == 0.0)
     {
         // a block starts: the kernel over kernelSteps steps of this dt, its
         // water then released in equal shares (the last lands X on a_0)
         double x = moisture;
-        step(kernel, x, state, air, massTransferCoefficient, kernelSteps_ * dt, &state[n + 2]);
+        step(kernel, x, state + 2, air, massTransferCoefficient, kernelSteps_ * dt, &state[1]);
         left = kernelSteps_;
     }
-    latentHeat = state[n + 2];
+    else if (!(left >= 1.0 && left < kernelSteps_ && left == std::floor(left)))
+    {
+        throw std::domain_error("dryingModel kernelDiffusion: expected a particle state whose first value "
+                                "is the calls left in a block of kernelSteps "
+                                + std::to_string(kernelSteps_) + ", got " + std::to_string(left)
+                                + " (a state of another layout, such as a restart written before "
+                                  "the block's values came first)");
+    }
+    latentHeat = state[1];
     const double old = moisture;
-    moisture = left == 1.0 ? state[0] : moisture - (moisture - state[0]) / left;
+    moisture = left == 1.0 ? state[2] : moisture - (moisture - state[2]) / left;
     left -= 1.0;
     return kernel.dryMass * (old - moisture);
 }
@@ -382,8 +393,8 @@ double KernelDiffusion::step(const Kernel& kernel, double& moisture, double* sta
 double KernelDiffusion::latentHeat(const Kernel& kernel, double, const double* state) const
 {
     // within a block, the block's (taken at its start)
-    if (kernelSteps_ > 1 && state[shells() + 1] > 0.0) return state[shells() + 2];
-    return isotherm().latentHeat(state[shells()], kernel.temperature);
+    if (kernelSteps_ > 1 && state[0] > 0.0) return state[1];
+    return isotherm().latentHeat(state[offset_ + shells()], kernel.temperature);
 }
 
 } // namespace spoutlab

@@ -35,8 +35,12 @@
 //
 // State: the N mode amplitudes a_k (a_0 the mean moisture X, the shells
 // X_i = sum_k a_k v_k,i: shellMoistures()), then X_s (stateSize() = N + 1);
-// with kernelSteps M > 1 also the calls left in the block and its latent
-// heat.
+// with kernelSteps M > 1 first the calls left in the block and its latent
+// heat, then the amplitudes and X_s (N + 3): a step inside a block reads
+// and writes only the row's first three values (the calls left, the latent
+// heat, a_0), one cache line of it in three rows of four, and needs no gas
+// (needsGas). A row of the layout before (the block's values last) stops
+// the run with one line (its first value, X, is not a whole number of calls).
 // Latent heat: the grain's at the surface moisture X_s.
 //
 // Parameters:
@@ -82,7 +86,11 @@ public:
                                  double massTransferCoefficient, double dt,
                                  double& latentHeat) const override;
     double latentHeat(const Kernel& kernel, double moisture, const double* state) const override;
+    // false inside a kernelSteps block (its kernel already advanced)
+    bool needsGas(const double* state) const override { return kernelSteps_ == 1 || state[0] == 0.0; }
     std::string name() const override { return "kernelDiffusion"; }
+    // The mean moisture a_0 held in a state (X at the end of a block).
+    double meanMoisture(const double* state) const { return state[offset_]; }
 
     // D_eff(T) [m^2/s].
     double diffusivity(double temperature) const;
@@ -118,6 +126,7 @@ private:
     double d0_;
     double activationEnergy_;
     int kernelSteps_ = 1;              // coupling steps per kernel step (kernelSteps)
+    int offset_ = 0;                   // where the amplitudes start in a state (2 with blocks)
     std::vector<double> weights_;      // w_i, dry-mass fraction of shell i
     std::vector<double> conductance_;  // g_f of face f (1..N-1) and g_s of the surface (index N), per unit R
     std::vector<double> lambda_;       // lambda_k, the modes' decay rates in tau, lambda_0 = 0

@@ -207,3 +207,119 @@ TEST(MoistureExchange, StateInPlaceIsTheStateCopied)
         EXPECT_LT(copied.moisture[0], 0.3);
     }
 }
+
+// Inside a kernelSteps block the model needs no gas (needsGas) and the
+// exchange gathers none for those particles. Against the same model stepped
+// by hand with each particle's weighted gas on every step, and the cell sums
+// made by hand: the same water, latent heat, moisture, state, vapour source
+// and enthalpy to the bit, with the gas and the particles' temperatures
+// changing every step, over three blocks of 4 (the particles start their
+// blocks on different steps), the state in rows of its own and copied.
+TEST(MoistureExchange, SkippingTheGasInsideBlocksIsSteppingWithTheGas)
+{
+    const CartesianMesh mesh = CartesianMesh::uniform({0, 0, 0}, {0.08, 0.06, 0.04}, 4, 3, 2);
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    std::vector<Particle> particles;
+    for (long id = 1; id <= 24; ++id)
+    {
+        particles.push_back(kernelAt(id,
+                                     {0.004 + 0.072 * u(rng), 0.004 + 0.052 * u(rng), 0.004 + 0.032 * u(rng)},
+                                     320.0 + 40.0 * u(rng)));
+    }
+    DividedVoidFraction divided(Parameters("dividedProps"));
+    const VoidFractionResult vf = divided.compute(mesh, particles);
+    Parameters props("kernelDiffusionProps");
+    props.set("D0", "1.4904e-4").set("activationEnergy", "41762").set("kernelSteps", "4");
+    const MoistureExchange exchange(DryingModel::New("kernelDiffusion", props), p0);
+    const DryingModel& model = exchange.model();
+    const std::size_t n = particles.size(), width = static_cast<std::size_t>(model.stateSize());
+    const std::size_t nCells = static_cast<std::size_t>(mesh.nCells());
+    for (const bool inRows : {true, false})
+    {
+        KernelMoisture kernels{std::vector<double>(n, 2.5e-4), std::vector<double>(n, 0.3), {}, {}};
+        std::vector<std::vector<double>> rows(n, std::vector<double>(width));
+        if (inRows)
+            for (std::size_t i = 0; i < n; ++i) kernels.stateRows.push_back(rows[n - 1 - i].data());
+        else
+            kernels.state.assign(width * n, 0.0);
+        std::vector<double> moisture(kernels.moisture), state(width * n);
+        for (std::size_t i = 0; i < n; ++i)
+        {
+            exchange.initialise(kernels, i);
+            model.initialise(moisture[i], &state[width * i]);
+        }
+        const double dt = 3e-4;
+        int skipped = 0;
+        for (int k = 0; k < 13; ++k)
+        {
+            Gas gas;
+            for (std::size_t c = 0; c < nCells; ++c)
+            {
+                gas.T.push_back(340.0 + 60.0 * u(rng));
+                gas.W.push_back(0.005 + 0.01 * u(rng));
+                gas.km.push_back(0.03 + 0.04 * u(rng));
+            }
+            for (Particle& p : particles) p.temperature += 2.0 * (u(rng) - 0.5);
+            // particles 0..2 join one step later each: blocks out of step
+            const std::size_t active = std::min<std::size_t>(n, n - 3 + static_cast<std::size_t>(k));
+            std::vector<Particle> now(particles.begin(), particles.begin() + active);
+            ParticleCellMap map;
+            for (std::size_t i = 0; i < active; ++i)
+            {
+                const ParticleCellMap::Row row = vf.map.cells(i);
+                map.appendRow(std::vector<CellWeight>(row.begin(), row.end()));
+            }
+            KernelMoisture part{
+                std::vector<double>(kernels.dryMass.begin(), kernels.dryMass.begin() + active),
+                std::vector<double>(kernels.moisture.begin(), kernels.moisture.begin() + active),
+                {},
+                {}};
+            if (inRows)
+                part.stateRows.assign(kernels.stateRows.begin(), kernels.stateRows.begin() + active);
+            else
+                part.state.assign(kernels.state.begin(), kernels.state.begin() + width * active);
+            for (std::size_t i = 0; i < active; ++i) skipped += !model.needsGas(part.stateOf(i, width));
+            const MoistureStep step = exchange.advance(mesh, now, map, gas.fields(), part, dt);
+            std::copy(part.moisture.begin(), part.moisture.end(), kernels.moisture.begin());
+            if (!inRows) std::copy(part.state.begin(), part.state.end(), kernels.state.begin());
+            // by hand: every particle in the gas of its cells
+            std::vector<double> water(active), latent(active), sums(2 * nCells, 0.0);
+            for (std::size_t i = 0; i < active; ++i)
+            {
+                double Tg = 0.0, W = 0.0, km = 0.0;
+                for (const CellWeight& cw : map.cells(i))
+                {
+                    Tg += cw.weight * gas.T[cw.cell];
+                    W += cw.weight * gas.W[cw.cell];
+                    km += cw.weight * gas.km[cw.cell];
+                }
+                const Kernel kernel{2.0 * now[i].radius, kernels.dryMass[i], now[i].temperature};
+                water[i] = model.advanceWithLatentHeat(kernel, moisture[i], &state[width * i],
+                                                       MoistAir{Tg, W, p0}, km, dt, latent[i]);
+                for (const CellWeight& cw : map.cells(i))
+                {
+                    sums[2 * cw.cell] += cw.weight * water[i];
+                    sums[2 * cw.cell + 1] += cw.weight * water[i] * kernel.temperature;
+                }
+            }
+            EXPECT_EQ(step.waterLost, water) << k;
+            EXPECT_EQ(step.latentHeat, latent) << k;
+            EXPECT_EQ(part.moisture, std::vector<double>(moisture.begin(), moisture.begin() + active)) << k;
+            for (std::size_t c = 0; c < nCells; ++c)
+            {
+                const double perVolumeTime = 1.0 / (dt * mesh.cellVolume(static_cast<label>(c)));
+                EXPECT_EQ(step.vapourSource[c], sums[2 * c] * perVolumeTime) << k << " " << c;
+                EXPECT_EQ(step.vapourEnthalpy[c], psy::kCpVapour * sums[2 * c + 1] * perVolumeTime) << k;
+            }
+        }
+        for (std::size_t i = 0; i < n; ++i)
+        {
+            const double* row = inRows ? rows[n - 1 - i].data() : &kernels.state[width * i];
+            EXPECT_EQ(std::vector<double>(row, row + width),
+                      std::vector<double>(&state[width * i], &state[width * (i + 1)]));
+        }
+        EXPECT_GT(skipped, 200); // three of four particle-steps inside a block
+        EXPECT_LT(kernels.moisture[5], 0.3);
+    }
+}
