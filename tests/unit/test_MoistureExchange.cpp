@@ -54,6 +54,36 @@ struct Gas
     MoistureCellFields fields() const { return {T, W, km}; }
 };
 
+// n kernels at random places inside the 8 x 6 x 4 cm box of the tests'
+// 4 x 3 x 2 mesh, at temperatures in [T0, T0 + spread)
+std::vector<Particle> scatteredKernels(std::mt19937& rng, long n, double T0, double spread)
+{
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    std::vector<Particle> particles;
+    for (long id = 1; id <= n; ++id)
+    {
+        particles.push_back(kernelAt(id,
+                                     {0.004 + 0.072 * u(rng), 0.004 + 0.052 * u(rng), 0.004 + 0.032 * u(rng)},
+                                     T0 + spread * u(rng)));
+    }
+    return particles;
+}
+
+// Each cell's gas at random: T in [T0, T0 + spread), W in [0.005, 0.005 +
+// wSpread), k_m in [0.03, 0.07) m/s.
+Gas randomGas(std::mt19937& rng, std::size_t nCells, double T0, double spread, double wSpread)
+{
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    Gas gas;
+    for (std::size_t c = 0; c < nCells; ++c)
+    {
+        gas.T.push_back(T0 + spread * u(rng));
+        gas.W.push_back(0.005 + wSpread * u(rng));
+        gas.km.push_back(0.03 + 0.04 * u(rng));
+    }
+    return gas;
+}
+
 } // namespace
 
 // Two cells of 20 mm side; a particle on their common face has half its volume
@@ -94,23 +124,10 @@ TEST(MoistureExchange, GasReceivesTheWaterTheParticlesLose)
 {
     const CartesianMesh mesh = CartesianMesh::uniform({0, 0, 0}, {0.08, 0.06, 0.04}, 4, 3, 2);
     std::mt19937 rng(7);
-    std::uniform_real_distribution<double> u(0.0, 1.0);
-    std::vector<Particle> particles;
-    for (long id = 1; id <= 40; ++id)
-    {
-        particles.push_back(kernelAt(id,
-                                     {0.004 + 0.072 * u(rng), 0.004 + 0.052 * u(rng), 0.004 + 0.032 * u(rng)},
-                                     300.0 + 30.0 * u(rng)));
-    }
+    std::vector<Particle> particles = scatteredKernels(rng, 40, 300.0, 30.0);
     DividedVoidFraction divided(Parameters("dividedProps"));
     const VoidFractionResult vf = divided.compute(mesh, particles);
-    Gas gas;
-    for (label c = 0; c < mesh.nCells(); ++c)
-    {
-        gas.T.push_back(320.0 + 20.0 * u(rng));
-        gas.W.push_back(0.005 + 0.02 * u(rng));
-        gas.km.push_back(0.03 + 0.04 * u(rng));
-    }
+    const Gas gas = randomGas(rng, static_cast<std::size_t>(mesh.nCells()), 320.0, 20.0, 0.02);
     KernelMoisture kernels{std::vector<double>(40, 2.5e-4), std::vector<double>(40, 0.3), {}, {}};
     const double dt = 3e-4;
     const MoistureStep step = freeWater().advance(mesh, particles, vf.map, gas.fields(), kernels, dt);
@@ -155,23 +172,10 @@ TEST(MoistureExchange, StateInPlaceIsTheStateCopied)
 {
     const CartesianMesh mesh = CartesianMesh::uniform({0, 0, 0}, {0.08, 0.06, 0.04}, 4, 3, 2);
     std::mt19937 rng(11);
-    std::uniform_real_distribution<double> u(0.0, 1.0);
-    std::vector<Particle> particles;
-    for (long id = 1; id <= 20; ++id)
-    {
-        particles.push_back(kernelAt(id,
-                                     {0.004 + 0.072 * u(rng), 0.004 + 0.052 * u(rng), 0.004 + 0.032 * u(rng)},
-                                     320.0 + 40.0 * u(rng)));
-    }
+    std::vector<Particle> particles = scatteredKernels(rng, 20, 320.0, 40.0);
     DividedVoidFraction divided(Parameters("dividedProps"));
     const VoidFractionResult vf = divided.compute(mesh, particles);
-    Gas gas;
-    for (label c = 0; c < mesh.nCells(); ++c)
-    {
-        gas.T.push_back(340.0 + 60.0 * u(rng));
-        gas.W.push_back(0.005 + 0.01 * u(rng));
-        gas.km.push_back(0.03 + 0.04 * u(rng));
-    }
+    const Gas gas = randomGas(rng, static_cast<std::size_t>(mesh.nCells()), 340.0, 60.0, 0.01);
     for (const char* kernelSteps : {"1", "3"})
     {
         Parameters props("kernelDiffusionProps");
@@ -220,13 +224,7 @@ TEST(MoistureExchange, SkippingTheGasInsideBlocksIsSteppingWithTheGas)
     const CartesianMesh mesh = CartesianMesh::uniform({0, 0, 0}, {0.08, 0.06, 0.04}, 4, 3, 2);
     std::mt19937 rng(5);
     std::uniform_real_distribution<double> u(0.0, 1.0);
-    std::vector<Particle> particles;
-    for (long id = 1; id <= 24; ++id)
-    {
-        particles.push_back(kernelAt(id,
-                                     {0.004 + 0.072 * u(rng), 0.004 + 0.052 * u(rng), 0.004 + 0.032 * u(rng)},
-                                     320.0 + 40.0 * u(rng)));
-    }
+    std::vector<Particle> particles = scatteredKernels(rng, 24, 320.0, 40.0);
     DividedVoidFraction divided(Parameters("dividedProps"));
     const VoidFractionResult vf = divided.compute(mesh, particles);
     Parameters props("kernelDiffusionProps");
@@ -253,13 +251,7 @@ TEST(MoistureExchange, SkippingTheGasInsideBlocksIsSteppingWithTheGas)
         int skipped = 0;
         for (int k = 0; k < 13; ++k)
         {
-            Gas gas;
-            for (std::size_t c = 0; c < nCells; ++c)
-            {
-                gas.T.push_back(340.0 + 60.0 * u(rng));
-                gas.W.push_back(0.005 + 0.01 * u(rng));
-                gas.km.push_back(0.03 + 0.04 * u(rng));
-            }
+            const Gas gas = randomGas(rng, nCells, 340.0, 60.0, 0.01);
             for (Particle& p : particles) p.temperature += 2.0 * (u(rng) - 0.5);
             // particles 0..2 join one step later each: blocks out of step
             const std::size_t active = std::min<std::size_t>(n, n - 3 + static_cast<std::size_t>(k));
