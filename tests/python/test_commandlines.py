@@ -11,14 +11,14 @@ import subprocess
 import tempfile
 import unittest
 
-from spoutlab.protocols import circulation, drying, heattransfer, minimumspouting
+from spoutlab.protocols import circulation, drying, dryingtime, heattransfer, minimumspouting
 from spoutlab.protocols import mixing, profiles, results, velocitymaps
 
 REPOSITORY = os.path.abspath(os.environ.get('SPOUTLAB_DIR', '../..'))
 COMMANDS = ['generate', 'inletVelocity', 'evaluate'] + [
     os.path.join('protocols', p) for p in ('minimumSpouting', 'circulation', 'profiles',
                                           'velocityMaps', 'heatTransfer', 'drying', 'results',
-                                          'mixing')]
+                                          'mixing', 'dryingTime')]
 CASE = None
 
 
@@ -144,6 +144,9 @@ class Defaults(unittest.TestCase):
         o = drying.options(['dryingModel=freeWater'])
         self.assertEqual((o['u'], o['time'], o['average'], o['write'], o['part'], o['n'], o['np'],
                           o['overrides']), (2.0, 6.0, 1.8, 0.15, 'both', None, 1, ['dryingModel=freeWater']))
+        o = dryingtime.options([])
+        self.assertEqual((o['u'], o['time'], o['average'], o['write'], o['part'], o['bin']),
+                         (2.0, 20.0, 18.0, 1.0, 'statistics', 0.05))
         _, a = results.parse(['ums', 'circ', '--heat', 'h', '--noplates', 'a',
                               '--noplates', 'b', '-o', 'out.md', '--mixing', 'm', '--drying', 'd'])
         self.assertEqual((a.cases, a.heat, a.noplates, a.maps, a.mixing, a.drying, a.out),

@@ -23,6 +23,8 @@ COMMANDS = {
                      '(draft-plate paper section 4.7, Figs 11-12)'),
     'drying': ('drying', 'the bed with draft plates as a dryer, wet corn in hot air '
                '(draft-plate paper section 4.7 conditions)'),
+    'dryingTime': ('dryingtime', 'what the long-time drying predictor takes from the '
+                   'CFD-DEM: circulation statistics of the bed with draft plates'),
     'results': ('results', "the protocol outputs collected into docs/RESULTS.md and "
                 "docs/results.csv beside the papers' values"),
 }

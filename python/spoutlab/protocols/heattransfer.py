@@ -64,9 +64,10 @@ def setting(entry, value):
                            'system/controlDict'], stdout=subprocess.DEVNULL)
 
 
-def run(o, work, name='heatTransfer', extra=()):
+def run(o, work, name='heatTransfer', extra=(), entries=None):
     """Prepare (once) and run or continue the case in work, with heat and
-    the `extra` overrides of system/spoutedBedDict."""
+    the `extra` overrides of system/spoutedBedDict; entries(), if given, is
+    called in work before spoutFoam (a protocol's own dictionary entries)."""
     if not os.path.isdir(work):
         os.makedirs('runs', exist_ok=True)
         shutil.copytree('.', work, ignore=shutil.ignore_patterns(
@@ -84,6 +85,8 @@ def run(o, work, name='heatTransfer', extra=()):
         dt = foamfile.scalar('system/controlDict', 'deltaT')
         setting('writeInterval', '%.10g' % (max(1, round(o['write'] / dt)) * dt))
         setting('functions.averages.timeStart', '%g' % (o['time'] - o['average']))
+        if entries:
+            entries()
         if (caserun.last_time('log.spoutFoam') or 0.0) < o['time'] - 1e-3:
             t0 = time.time()
             caserun.run_spoutfoam(o['time'], o['np'], name)
