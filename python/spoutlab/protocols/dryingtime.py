@@ -2,10 +2,10 @@
 spouted) takes from the CFD-DEM, and how it compares with it.
 
   statistics  the circulation statistics of the bed with draft plates at one
-              operating point (hot air as in section 4.7, heat on, the
-              particles dry: h and the gas temperature per region come from
-              the heat coupling, the moisture is the predictor's), in
-              runs/statistics_u<u>/: spoutFoam to
+              operating point (hot air as in section 4.7, heat on, dry
+              particles: the predictor takes each region's slip Re and
+              voidage and evaluates its own heat and mass transfer there),
+              in runs/statistics_u<u>/: spoutFoam to
               --time with the statistics sampled from --time minus
               --average (constant/couplingProperties 'circulation'), a
               restart point every --write seconds; started again, it
