@@ -524,6 +524,39 @@ def drying_section(case):
     return rows, keys, pngs
 
 
+def drytime_section(case):
+    """The long-time predictor's side of the CFD-DEM from protocols/
+    dryingTime's dryingTime.json: the circulation statistics per operating
+    point."""
+    r = read_json(case, 'dryingTime.json', 'protocols/dryingTime with its options')
+    rows, keys, pngs = [], [], []
+    for label, st in sorted(r.get('statistics', {}).items()):
+        settings = ('%d particles, draft plates, u_s = %g m/s, hot air (heat on), %g s; '
+                    'statistics and W_s over the last %g s' % (st['particles'], st['u_s'],
+                                                                st['time'], st['average']))
+        wall = '%.2f h' % (st['wall_s'] / 3600)
+        res, n = st['residence'], st['visits']
+        rows += [('mean residence: spout / fountain / downcomer / entrainment zone',
+                  ' / '.join('%.3g s (%d)' % (res[k], n[k])
+                             for k in ('spout', 'fountain', 'downcomer', 'entrainment')), '',
+                  settings, wall),
+                 ('mean cycle against bed mass / W_s (eq 14)', '%.3g s (%d cycles) against '
+                  '%.3g s: %+.1f %%' % (res['cycle'], n['cycle'], res['cycle'] /
+                                         (1 + st['cycle_vs_Ws_rel']), 100 * st['cycle_vs_Ws_rel']),
+                  'within 5 % (issue 24)', settings, wall),
+                 ("the window's two halves: difference of the mean residences / its standard "
+                  'error', ', '.join('%s %.1f' % (k, abs(h[0]) / h[1]) for k, h in
+                                     sorted(st['halves'].items()) if h and h[1] > 0),
+                  'within the sampling error (about 2 or less)', settings, wall)]
+        keys.append(('drytime.cycle_vs_Ws_rel' + ('' if label == 'u2' else '_' + label),
+                     '%.3g' % st['cycle_vs_Ws_rel'], '', '0',
+                     'mean cycle / (bed mass / W_s) - 1, W_s of eq 14 %.4g kg/s; ' % st['Ws']
+                     + settings))
+        pngs.append(('dryingTime_circulation_%s.png' % label,
+                     'drytime_circulation_%s.png' % label))
+    return rows, keys, [p for p in pngs if os.path.isfile(os.path.join(case, p[0]))]
+
+
 SECTIONS = [
     ('ums', 'Minimum spouting (section 4.1, Figs 2-3)'),
     ('friction', 'Circulation rate vs friction at u_ms (section 4.4, eq 16, Fig 7)'),
@@ -531,6 +564,8 @@ SECTIONS = [
     ('profiles', 'Spout and downcomer profiles (sections 4.2-4.3, Figs 4-5)'),
     ('heat', 'Gas-to-particle heat transfer (section 4.7, Figs 11-12)'),
     ('drying', 'Drying: one kernel, and the bed as a dryer at the section 4.7 conditions'),
+    ('drytime', 'Drying time: the circulation statistics the long-time predictor takes from '
+                'the CFD-DEM'),
     ('noplates10k', 'Without draft plates, 10 000 particles (no-draft paper, Fig 2a)'),
     ('noplates26k', 'Without draft plates, 26 000 particles (no-draft paper, Fig 2b)'),
     ('maps', 'Gas and particle velocity without draft plates (no-draft paper, Figs 3-4)'),
@@ -545,6 +580,8 @@ def section_of_key(key):
         return key.split('.')[0]
     if key.startswith('dry.'):
         return 'drying'
+    if key.startswith('drytime.'):
+        return 'drytime'
     if key.startswith('mixing'):
         return 'mixing'
     if key.startswith('draft.Ws_He'):
@@ -556,6 +593,7 @@ def section_of_key(key):
 
 FIGURES = {'ums': ('fig2_', 'fig3_'), 'friction': ('fig7_',), 'velocity': ('fig6_',),
            'profiles': ('fig4_5_',), 'heat': ('fig11_', 'fig12_'), 'drying': ('drying_',),
+           'drytime': ('drytime_',),
            'noplates10k': ('noplates10k_',), 'noplates26k': ('noplates26k_',),
            'maps': ('noplates_maps_',), 'mixing': ('mixing_',)}
 
@@ -568,7 +606,8 @@ def remove_figures(section, figure_dir):
                 os.remove(os.path.join(figure_dir, f))
 
 
-def build(ums, circ, heat, figure_dir, noplates=(), maps=None, mixing=(), drying=None):
+def build(ums, circ, heat, figure_dir, noplates=(), maps=None, mixing=(), drying=None,
+          drytime=None):
     """section -> (table rows, results.csv rows, figure names) for the runs given."""
     new = {}
 
@@ -622,6 +661,9 @@ def build(ums, circ, heat, figure_dir, noplates=(), maps=None, mixing=(), drying
     if drying:
         rows, keys, pngs = drying_section(drying)
         new['drying'] = (rows, keys, figures('drying', drying, pngs))
+    if drytime:
+        rows, keys, pngs = drytime_section(drytime)
+        new['drytime'] = (rows, keys, figures('drytime', drytime, pngs))
     for case in noplates:
         name, rows, keys, pngs = noplates_section(case)
         if name not in FIGURES:
@@ -684,6 +726,8 @@ def parse(argv):
                    help='a case copy where protocols/heatTransfer ran (heat.csv)')
     p.add_argument('--drying', metavar='DRYING_DIR',
                    help='a case copy where protocols/drying ran (drying.json)')
+    p.add_argument('--dryingTime', metavar='DRYINGTIME_DIR',
+                   help='a case copy where protocols/dryingTime ran (dryingTime.json)')
     p.add_argument('--noplates', action='append', default=[], metavar='UMS_DIR',
                    help='a case copy where minimumSpouting --vessel no-plates ran, with '
                         '10 000 or 26 000 particles (repeat for both)')
@@ -708,13 +752,13 @@ def main(argv):
     p, a = parse(argv)
     out, cases, heat, noplates, maps, mixing = (a.out, a.cases, a.heat, a.noplates, a.maps,
                                                 a.mixing)
-    if not cases and not heat and not noplates and not maps and not mixing and not a.drying:
+    if not (cases or heat or noplates or maps or mixing or a.drying or a.dryingTime):
         p.print_help()
         return 2
     ums = cases[0] if cases else None
     circ = cases[1] if len(cases) > 1 else None
     new = build(ums, circ, heat, os.path.join(os.path.dirname(out), 'figures'), noplates, maps,
-                mixing, a.drying)
+                mixing, a.drying, a.dryingTime)
     old = old_sections(out)
     lines = ['# SpoutLab vs the source papers', '',
              'Written by `openfoam_cases/spoutDraftPlates/protocols/results` from the protocol',
