@@ -3,7 +3,7 @@
 A benchmark, not a test: it prints figures and asserts nothing about speed.
 One hot draft-plate bed (N particles, 2.0 m/s, inlet 150 C) is settled once
 by the case's own Allrun with moisture on (reused by later calls with the
-same N); from it spoutFoam runs the same simulated time three ways, one
+same N); from it spoutFoam runs the same simulated time four ways, one
 after the other on one rank:
 
   heat       heat transfer only (dryingModel none, no moisture in LIGGGHTS)
