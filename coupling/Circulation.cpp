@@ -203,8 +203,11 @@ void CirculationStatistics::add(const std::vector<double>& packed)
 {
     if (packed.size() < fixedPackSize + 1)
         throw std::invalid_argument("CirculationStatistics: packed data too short");
-    const auto bins = std::size_t(packed[fixedPackSize]);
-    if (packed.size() != fixedPackSize + 1 + bins * residence_.size())
+    // the bins from the length: the count's slot is, like every other, a
+    // sum when the ranks' vectors were summed element by element
+    const std::size_t histograms = packed.size() - fixedPackSize - 1;
+    const std::size_t bins = histograms / residence_.size();
+    if (histograms != bins * residence_.size())
     {
         throw std::invalid_argument("CirculationStatistics: packed data of the wrong size");
     }

@@ -43,8 +43,9 @@
 // both halves cut long visits off alike and agree for a steady bed.
 //
 // Everything the statistics hold is a sum: pack() gives it as one vector
-// whose element-wise sum over the ranks is the statistics of the whole bed
-// (add), and unpack() restores a packed vector (restarts).
+// whose element-wise sum over the ranks (packed to the same number of bins)
+// is the statistics of the whole bed (add), and unpack() restores a packed
+// vector (restarts).
 
 #include "Vec3.hpp"
 

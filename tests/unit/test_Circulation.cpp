@@ -332,3 +332,32 @@ TEST(CirculationStatistics, PackAddUnpack)
     EXPECT_EQ(restored.pack().size(), two.pack().size());
     EXPECT_THROW(restored.unpack(std::vector<double>(3, 0.0)), std::invalid_argument);
 }
+
+// The solver sums the ranks' packed vectors element by element (MPI_Reduce
+// with MPI_SUM) and the master unpacks the sum: that must give what adding
+// them one by one gives, the bins' count included.
+TEST(CirculationStatistics, ElementWiseSumOfPacksIsTheirAdd)
+{
+    CirculationStatistics one(bed, 0.0, 1.0, 0.05), two(bed, 0.0, 1.0, 0.05);
+    std::vector<double> a = freshTrack(), b = freshTrack();
+    const std::vector<Vec3> pathA = repeat(inSpout, 2) + repeat(inFountain, 3) + repeat(inDowncomer, 5);
+    const std::vector<Vec3> pathB = repeat(inDowncomer, 1) + repeat(inEntrainment, 2) + repeat(inSpout, 7);
+    for (std::size_t k = 0; k < pathA.size(); ++k)
+    {
+        const double t = 0.1 * double(k);
+        one.observe(t, pathA[k], a.data(), {});
+        two.observe(t, pathB[k], b.data(), {});
+        one.endSample(t);
+        two.endSample(t);
+    }
+    const std::size_t bins = std::max(one.bins(), two.bins());
+    ASSERT_GT(bins, 0u);
+    std::vector<double> sum = one.pack(bins);
+    const std::vector<double> other = two.pack(bins);
+    ASSERT_EQ(sum.size(), other.size());
+    for (std::size_t k = 0; k < sum.size(); ++k) sum[k] += other[k];
+    CirculationStatistics reduced(bed, 0.0, 1.0, 0.05);
+    reduced.unpack(sum);
+    one.add(two.pack(bins));
+    EXPECT_EQ(reduced.pack(bins), one.pack(bins));
+}
