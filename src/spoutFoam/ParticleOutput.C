@@ -17,18 +17,18 @@ ParticleOutput::ParticleOutput(const std::string& directory)
 {}
 
 
-void ParticleOutput::write
-(
-    double time,
-    const std::string& timeName,
-    const std::vector<Particle>& particles,
-    const ParticleColumns& columns
-) const
+namespace
 {
-    // one row per particle: id, x (3), v (3), radius, the vectors (3 each),
-    // the scalars
-    const std::size_t nv = columns.vectors.size(), ns = columns.scalars.size();
-    const std::size_t width = 8 + 3*nv + ns;
+
+//- One row per particle: id, x (3), v (3), radius, the vectors (3 each),
+//  the scalars
+std::vector<double> packedRows
+(
+    const std::vector<Particle>& particles,
+    const ParticleColumns& columns,
+    std::size_t width
+)
+{
     std::vector<double> rows;
     rows.reserve(particles.size()*width);
     for (std::size_t i = 0; i < particles.size(); ++i)
@@ -49,7 +49,24 @@ void ParticleOutput::write
             rows.push_back((*column.second)[i]);
         }
     }
-    rows = gathered(rows, MPI_COMM_WORLD, false);
+    return rows;
+}
+
+} // namespace
+
+
+void ParticleOutput::write
+(
+    double time,
+    const std::string& timeName,
+    const std::vector<Particle>& particles,
+    const ParticleColumns& columns
+) const
+{
+    const std::size_t nv = columns.vectors.size(), ns = columns.scalars.size();
+    const std::size_t width = 8 + 3*nv + ns;
+    const std::vector<double> rows =
+        gathered(packedRows(particles, columns, width), MPI_COMM_WORLD, false);
     int rank = 0;
     MPI_Comm_rank(MPI_COMM_WORLD, &rank);
     if (rank != 0) return;

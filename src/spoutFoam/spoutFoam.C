@@ -31,6 +31,29 @@ Description
 #include <cstdlib>
 #include <string>
 
+
+//- Bad input: one line on the master; one write, so that another rank's
+//  MPI_Abort banner cannot split it
+static int stopOnInput(const spoutlab::InputError& err)
+{
+    if (Pstream::master())
+    {
+        std::cerr << (std::string("spoutFoam: ") + err.what() + "\n") << std::flush;
+    }
+    return 1;
+}
+
+
+//- A model outside its domain (e.g. a psychrometric function given a
+//  negative humidity): one line, from the rank that found it
+static int stopInModel(const Time& runTime, const std::exception& err)
+{
+    std::cerr << ("spoutFoam: stopped at t = " + runTime.timeName() + " s: " + err.what() + "\n")
+        << std::flush;
+    return 1;
+}
+
+
 int main(int argc, char *argv[])
 {
     #include "spoutFoamOptions.H"
@@ -78,20 +101,11 @@ int main(int argc, char *argv[])
     }
     catch (const spoutlab::InputError& err)
     {
-        if (Pstream::master())
-        {
-            // one write: another rank's MPI_Abort banner must not split it
-            std::cerr << (std::string("spoutFoam: ") + err.what() + "\n") << std::flush;
-        }
-        status = 1;
+        status = stopOnInput(err);
     }
     catch (const std::exception& err)
     {
-        // a model outside its domain (e.g. a psychrometric function given a
-        // negative humidity): one line, from the rank that found it
-        std::cerr << ("spoutFoam: stopped at t = " + runTime.timeName() + " s: " + err.what() + "\n")
-            << std::flush;
-        status = 1;
+        status = stopInModel(runTime, err);
     }
 
     #include "finishRun.H"

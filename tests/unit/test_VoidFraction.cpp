@@ -385,7 +385,10 @@ TEST(VoidFraction, KeptRowsAreTheRowsMappedAfresh)
                     EXPECT_EQ(a.first[k].weight, b.first[k].weight);
                 }
             }
-            if (migrated) EXPECT_GT(next.rowsKept, particles.size() / 2) << name << " step " << step;
+            if (migrated)
+            {
+                EXPECT_GT(next.rowsKept, particles.size() / 2) << name << " step " << step;
+            }
             kept += next.rowsKept;
             rows += particles.size();
             last = next;
