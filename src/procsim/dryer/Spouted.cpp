@@ -179,8 +179,14 @@ Bed::Bed(const Case& cs) : c(cs)
         residence.push_back(r.residence);
         residence.back().prepare();
     }
+    const std::size_t rows = c.initialStateX.size();
     for (std::size_t i = 0; i < n; ++i)
     {
+        if (rows)
+        {
+            X[i] = c.initialStateX[i % rows];
+            T[i] = c.initialStateT[i % rows];
+        }
         rng[i] = c.seed * 0x2545F4914F6CDD1DULL + i;
         c.drying->initialise(X[i], width ? &state[i * width] : nullptr);
         if (c.circulating) place(i);

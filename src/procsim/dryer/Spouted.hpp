@@ -17,7 +17,10 @@
 // count/samples, uniform within the bin). At t = 0 the samples are placed as
 // the stationary circulation has them: region r with probability
 // mean_r / sum of means, the time left there the residual of a length-biased
-// draw (renewal theory), so the bed starts at its measured holdup. In a
+// draw (renewal theory), so the bed starts at its measured holdup. Each
+// sample starts at the case's uniform moisture and temperature, or with
+// bed.initial_state at those of one kernel of a CFD-DEM particle file
+// (sample i the row i mod rows), its region drawn as above. In a
 // region over a segment tau (a step cut at residence ends) the kernel is
 // advanced exactly as the CFD-DEM's coupling step advances it (the
 // singleKernel case's sequence): the drying model's advanceWithLatentHeat at
@@ -129,6 +132,10 @@ struct Case
     // the bed
     double bedParticles = 1, diameter = 8e-3, dryMass = 2.5e-4, initialX = 0.3333, initialC = 25;
     double dryHeatCapacity = 1465;
+    // bed.initial_state: per-kernel moisture [kg/kg d.b.] and temperature [K]
+    // (sample i starts as row i mod rows); empty: initialX, initialC for all
+    std::string initialStateFile;
+    std::vector<double> initialStateX, initialStateT;
     GasProperties gas{};
     std::shared_ptr<const spoutlab::DryingModel> drying;
     std::string dryingName;

@@ -110,7 +110,7 @@ std::vector<std::pair<std::string, std::string>> summary(const Case& c, const Re
             {"end_time_h", f(r.endTime / 3600, 4)},
             {"M_initial_percent_wb", f(wetBasis(c.initialX), 3)},
             {"M_final_percent_wb", f(wetBasis(r.finalX), 3)},
-            {"X_final_std_percent_db", f(100 * r.finalStd, 4)},
+            {"X_final_std_percent_db", formatNumber(100 * r.finalStd, 6)},
             {"T_kernel_max_C", f(r.highestC, 3)},
             {"kernel_temperature_limit_C", f(c.limitC, 2)},
             {"time_any_kernel_above_limit_h", f(r.timeAnyAbove / 3600, 4)},
@@ -140,6 +140,16 @@ void printSummary(const Case& c, const Result& r, const BatchMetrics& m)
                        for (const auto& g : c.regions) s += g.residence.mean;
                        return s;
                    }());
+    if (!c.initialStateFile.empty())
+    {
+        const auto& x = c.initialStateX;
+        double var = 0;
+        for (const double v : x) var += (v - c.initialX) * (v - c.initialX);
+        fmt::print("initial state: {} ({} kernels, sample i the row i mod {}): X mean {:.5f}, std {:.5f} "
+                   "kg/kg d.b., T mean {:.2f} degC\n",
+                   c.initialStateFile, x.size(), x.size(), c.initialX,
+                   std::sqrt(var / static_cast<double>(x.size())), c.initialC);
+    }
     if (!c.statistics.empty()
         && (std::fabs(c.statisticsInletC - c.inletC) > 0.5
             || std::fabs(c.statisticsInletW - c.inletW) > 1e-4))
