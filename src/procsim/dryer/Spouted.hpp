@@ -97,6 +97,7 @@ struct Region
     double hFile = 0, kmFile = 0;  // the statistics' measured values (0: none)
     double holdupShare = 0;        // the statistics' holdup / particles (0: none)
     double gasTemperatureFile = 0; // [K] (0: none)
+    double gasHumidityFile = -1;   // the statistics' humidity ratio [kg/kg dry air] (-1: none)
     Residence residence;           // empty without circulation
     int path = 0;                  // gas path: 0 spout, 1 seepage
     int gasRank = 0;               // its place along the path (0 first)
@@ -185,6 +186,7 @@ struct Result
     double sorptionJ = 0; // heat of sorption taken by the bound water
     long steps = 0, segments = 0;
     std::vector<double> holdup;      // time-averaged share of the samples per region
+    std::vector<double> gasT, gasW;  // time-averaged gas the samples of each region saw [K], [kg/kg]
     std::vector<double> moisture;    // final X of every sample
     std::vector<double> temperature; // final T_p of every sample [K]
 };

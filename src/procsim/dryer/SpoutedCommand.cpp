@@ -72,7 +72,8 @@ void writeRegions(const std::string& path, const Case& c, const Result& r)
     CsvWriter s(path,
                 {"region", "heatTransferModel", "slipRe", "voidage", "h_W_per_m2K", "h_file_W_per_m2K",
                  "h_diff_percent", "km_m_per_s", "km_file_m_per_s", "km_diff_percent", "residence_mean_s",
-                 "residence_samples", "holdup_share_predicted", "holdup_share_file"});
+                 "residence_samples", "holdup_share_predicted", "holdup_share_file", "T_gas_C",
+                 "T_gas_file_C", "W_gas_kg_per_kg", "W_gas_file_kg_per_kg"});
     for (std::size_t i = 0; i < c.regions.size(); ++i)
     {
         const auto& g = c.regions[i];
@@ -81,7 +82,9 @@ void writeRegions(const std::string& path, const Case& c, const Result& r)
             formatNumber(g.h, 8), formatNumber(g.hFile, 8), formatNumber(relDiff(g.h, g.hFile), 4),
             formatNumber(g.km, 8), formatNumber(g.kmFile, 8), formatNumber(relDiff(g.km, g.kmFile), 4),
             formatNumber(g.residence.mean, 8), std::to_string(g.residence.samples),
-            formatNumber(r.holdup[i], 6), formatNumber(g.holdupShare, 6)});
+            formatNumber(r.holdup[i], 6), formatNumber(g.holdupShare, 6), formatNumber(r.gasT[i] - 273.15, 6),
+            g.gasTemperatureFile > 0 ? formatNumber(g.gasTemperatureFile - 273.15, 6) : "nan",
+            formatNumber(r.gasW[i], 6), g.gasHumidityFile >= 0 ? formatNumber(g.gasHumidityFile, 6) : "nan"});
     }
     s.close();
 }

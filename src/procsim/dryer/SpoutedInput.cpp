@@ -157,6 +157,7 @@ void readStatistics(const std::string& file, Case& c, const CaseGeometry& g, con
         r.hFile = k.within("h", 0, 1e6, "W/m2/K");
         r.kmFile = k.within("km", 0, 1e3, "m/s");
         r.gasTemperatureFile = k.within("Tgas", 0, 2000, "K");
+        r.gasHumidityFile = k.within("humidityRatio", -1, 0, 1);
         r.holdupShare = k.within("holdup", 0, particles) / particles;
         r.measured = true;
         c.regions.push_back(r);
