@@ -570,6 +570,15 @@ def drytime_section(case):
                   '%.4g / %.4g kg/kg d.b. (%.4g at the start): %+.1f %%'
                   % (c['spread_predictor'], c['spread_direct'], c['spread_start'],
                      100 * c['spread_rel']), 'within 20 % (issue 24)', settings, wall)]
+        if 'regions' in c and 'rate_unlimited_air' in c:
+            rows.append(('gas the kernels saw, predictor / CFD-DEM: T [C] and W per region; the '
+                         'rate with unlimited air',
+                         '; '.join('%s %.0f / %.0f, %.4f / %.4f'
+                                   % ((k,) + tuple(c['regions'][k]['Tgas_C'])
+                                      + tuple(c['regions'][k]['W']))
+                                   for k in ('spout', 'fountain', 'downcomer', 'entrainment'))
+                         + '; unlimited air %.2f x the direct rate'
+                         % (c['rate_unlimited_air'] / c['rate_direct']), '', settings, wall))
         keys += [('drytime.consistency_rate_rel', '%.3g' % c['rate_rel'], '', '0',
                   'predictor / direct - 1 of the bed-mean drying rate; direct %.4g kg/kg/s; '
                   % c['rate_direct'] + settings),
