@@ -15,24 +15,51 @@ spouted) takes from the CFD-DEM, and how it compares with it.
               (drytime.cycle_vs_Ws_rel).  The statistics file is copied here
               as circulation_u<u>.json, the predictor's input for this
               operating point.
+  consistency the predictor against a direct CFD-DEM drying run where both
+              can run (issue 24 item 3), in runs/consistency_u<u>_n<n>/:
+              the run with moisture on (free water by default: the
+              constant-rate period, whose bed-mean moisture moves visibly
+              in seconds), the circulation statistics sampled over the last
+              --average seconds, the particle files every --write seconds
+              (the window's start, --time minus --average, must be one).
+              The kernels of the particle file at the window's start are
+              exported as initial_state.csv, and procsim dryer spouted runs
+              from them for the window with that run's circulation.json, its
+              inlet air, bed and gas (predictor/case.yaml).  Compared: the
+              bed-mean drying rate, -(X(end) - X(start)) / window, and the
+              standard deviation of the kernels' moisture at the end, as
+              predictor / direct - 1 (drytime.consistency_rate_rel,
+              drytime.consistency_spread_rel).  The run of the numbers in
+              docs/RESULTS.md:
+                protocols/dryingTime --part consistency -n 1500 --time 12.3 \
+                    --average 10.2 --write 0.3 Hd=190
+              (the reduced bed of case.spoutedBedCirculation, draft plates
+              lowered to 190 mm, 2.0 m/s, inlet air at Tin = 150 C).
 Writes dryingTime.txt and dryingTime.json here (read by protocols/results).
 """
 import json
+import math
 import os
 import shutil
+import subprocess
 import sys
 
+from spoutlab import casefiles as sc
 from spoutlab import circulationstats
 from spoutlab import cli
+from spoutlab import spoutedbed
 from spoutlab.protocols import heattransfer
 
 
 def options(argv):
     def extra(p):
-        p.add_argument('--part', choices=('statistics',), default='statistics',
+        p.add_argument('--part', choices=('statistics', 'consistency'), default='statistics',
                        help='what to run (default %(default)s)')
         p.add_argument('--bin', type=float, default=0.05, metavar='S',
                        help="residence-time histograms' bin width [s] (default %(default)s)")
+        p.add_argument('--copies', type=int, default=10, metavar='K',
+                       help='consistency: predictor samples per kernel of the particle file '
+                            '(default %(default)s)')
         # the full bed at 2.0 m/s turns over in about 44 s (8.6 kg / W_s 0.196
         # kg/s): 18 s completed no downcomer visit; the cycle check needs a
         # window of several turnovers (--time of a few hundred seconds)
@@ -84,16 +111,232 @@ def statistics(o):
     return r, lines
 
 
+def particle_file_at(work, t, dt):
+    """The particle file of the run at time t (within half a time step)."""
+    for time, path in sc.particle_files(work):
+        if abs(time - t) <= 0.5 * dt:
+            return path
+    sys.exit('dryingTime: %s/particles: no particle file at t = %g s (the window\'s start and '
+             'end must be write times: --time and --time minus --average multiples of --write)'
+             % (work, t))
+
+
+def kernels(path):
+    """(ids, moisture [kg/kg d.b.], temperature [K]) of a particle file."""
+    X = sc.read_vtp_array(path, 'moisture')
+    T = sc.read_vtp_array(path, 'temperature')
+    ids = sc.read_vtp_array(path, 'id')
+    if not X or len(X) != len(T):
+        sys.exit('dryingTime: %s: no moisture and temperature per particle (a run with '
+                 'moisture=yes and heat)' % path)
+    return ids, X, T
+
+
+def mean_std(v):
+    m = sum(v) / len(v)
+    return m, math.sqrt(sum((x - m) ** 2 for x in v) / len(v))
+
+
+def predictor_case(g, o, work, n, window, bin_width):
+    """predictor/case.yaml: procsim dryer spouted over the window, from the
+    kernels at its start, with the run's statistics, air, bed and gas."""
+    d = g.particles['dp'] / 1000
+    dry_mass = g.particles['rhop'] * math.pi / 6 * d ** 3 / (1 + g.X0)
+    spout, down = g.correlations
+    props = {k: v for k, v in g.dryingProps.items() if k != 'kernelSteps'}  # the CFD's stepping
+    lines = [
+        '# written by protocols/dryingTime --part consistency: the predictor over the',
+        '# window of the direct CFD-DEM run in .., from its kernels at the start',
+        'statistics: ../circulation.json',
+        'circulation: measured',
+        'operation:',
+        '  inlet_temperature_C: %.10g' % (g.Tin - 273.15),
+        '  inlet_humidity_ratio: %.10g' % g.inletW,
+        '  superficial_velocity_m_per_s: %.10g' % o['u'],
+        '  pressure_Pa: %.10g' % g.gas['pressure'],
+        '  ambient_temperature_C: 20',
+        '  fan_power_kW: 0',
+        'geometry: {Wd: %.10g, He: %.10g, Hd: %.10g, plateThickness: %.10g, width: %.10g, '
+        'depth: %.10g}' % (g.Wd / 1000, g.He / 1000, g.Hd / 1000, g.t / 1000, g.W / 1000,
+                           g.Lb / 1000),
+        'bed:',
+        '  particles: %d' % n,
+        '  kernel_diameter_m: %.10g' % d,
+        '  kernel_dry_mass_kg: %.10g' % dry_mass,
+        '  initial_state: initial_state.csv',
+        '  kernelHeatCapacity: %.10g' % g.kernelHeatCapacity,
+        'gas: {rho: %.10g, mu: %.10g, Cp: %.10g, kappa: %.10g, Dv: %.10g}'
+        % tuple(g.gas[k] for k in ('rho', 'mu', 'Cp', 'kappa', 'Dv')),
+        'dryingModel: %s' % g.dryingModel,
+    ]
+    if props:
+        lines.append('%sProps: {%s}' % (g.dryingModel,
+                                        ', '.join('%s: %s' % kv for kv in sorted(props.items()))))
+    lines += [
+        'regions:',
+        '  spout: {heatTransferModel: %s}' % spout,
+        '  fountain: {heatTransferModel: %s}' % spout,
+        '  downcomer: {heatTransferModel: %s}' % down,
+        '  entrainment: {heatTransferModel: %s}' % down,
+        'gasModel: compartments',
+        'target_moisture_wb_percent: 0.5',
+        'stop_at_target: no',
+        'kernel_temperature_limit_C: 60',
+        'duration_h: %.10g' % (window / 3600),
+        'output_interval_s: %.10g' % o['write'],
+        'samples: %d' % (o['copies'] * n),
+        'seed: 1',
+        # steps no longer than a histogram bin: the compartments' gas follows
+        # the samples that cross between regions
+        'time_step: {max_s: %.10g, initial_s: %.10g}' % (bin_width, bin_width),
+    ]
+    os.makedirs(os.path.join(work, 'predictor'), exist_ok=True)
+    with open(os.path.join(work, 'predictor', 'case.yaml'), 'w') as f:
+        f.write('\n'.join(lines) + '\n')
+
+
+def series(path):
+    """The predictor's spouted_series.csv: [(t [s], X mean, T mean [C])]."""
+    out = []
+    with open(path) as f:
+        head = f.readline().strip().split(',')
+        for line in f:
+            v = dict(zip(head, map(float, line.split(','))))
+            out.append((3600 * v['time_h'], v['X_mean_percent_db'] / 100, v['T_kernel_mean_C']))
+    return out
+
+
+def summary_values(path):
+    return dict(line.strip().split(',', 1) for line in list(open(path))[1:])
+
+
+def consistency(o):
+    """The direct run and the predictor from its state over the same
+    window; their numbers and summary lines."""
+    g0 = spoutedbed.load('.', o['overrides'])
+    n_req = o['n'] or int(g0.particles['nParticles'])
+    work = os.path.join('runs', 'consistency_u%g_n%d' % (o['u'], n_req))
+    start = o['time'] - o['average']
+    heattransfer.run(o, work, 'dryingTime', ['moisture=yes', 'dryingModel=freeWater'],
+                     entries=lambda: with_circulation(start, o['bin']))
+    g = spoutedbed.load(work)
+    dt = g.particles['dtDem']
+    files = [(t, p) for t, p in sc.particle_files(work) if start - 0.5 * dt <= t]
+    first = particle_file_at(work, start, dt)
+    last = particle_file_at(work, o['time'], dt)
+    ids, X0, T0 = kernels(first)
+    _, X1, T1 = kernels(last)
+    n = len(X0)
+    os.makedirs(os.path.join(work, 'predictor'), exist_ok=True)
+    with open(os.path.join(work, 'predictor', 'initial_state.csv'), 'w') as f:
+        f.write('# the kernels of %s (the window\'s start, t = %g s)\n' % (first, start))
+        f.write('id,moisture_db,temperature_C\n')
+        for i, x, T in zip(ids or range(n), X0, T0):
+            f.write('%d,%.10g,%.10g\n' % (i, x, T - 273.15))
+    stats = circulationstats.read(os.path.join(work, 'circulation.json'))
+    window = o['time'] - start
+    predictor_case(g, o, work, n, window, stats['residence']['spout']['binWidth'])
+    procsim = shutil.which('procsim') or sys.exit('dryingTime: procsim not on PATH (. etc/bashrc)')
+    out = os.path.join(work, 'predictor')
+    with open(os.path.join(out, 'log.procsim'), 'w') as log:
+        if subprocess.call([procsim, 'dryer', 'spouted', 'case.yaml', '--out', '.'], cwd=out,
+                           stdout=log, stderr=subprocess.STDOUT) != 0:
+            sys.exit('dryingTime: procsim dryer spouted failed, see %s/log.procsim'
+                     % out)
+    # the same with unlimited air (every region at the inlet air): how much
+    # the gas's humidification limits the rate (a diagnosis, not compared)
+    inlet = os.path.join(out, 'unlimitedAir')
+    os.makedirs(inlet, exist_ok=True)
+    with open(os.path.join(out, 'case.yaml')) as f, \
+            open(os.path.join(inlet, 'case.yaml'), 'w') as g_:
+        g_.write(f.read().replace('gasModel: compartments', 'gasModel: inlet')
+                 .replace('statistics: ../', 'statistics: ../../')
+                 .replace('initial_state: ', 'initial_state: ../'))
+    with open(os.path.join(inlet, 'log.procsim'), 'w') as log:
+        subprocess.call([procsim, 'dryer', 'spouted', 'case.yaml', '--out', '.'], cwd=inlet,
+                        stdout=log, stderr=subprocess.STDOUT)
+    unlimited = series(os.path.join(inlet, 'spouted_series.csv'))
+    pred = series(os.path.join(out, 'spouted_series.csv'))
+    summ = summary_values(os.path.join(out, 'spouted_summary.csv'))
+    # the direct run's bed-mean moisture at every write time of the window
+    direct = []
+    for t, p in files:
+        if t <= o['time'] + 0.5 * dt:
+            _, X, T = kernels(p)
+            direct.append((t - start, mean_std(X)[0], mean_std(T)[0] - 273.15))
+    (x0, s0), (x1, s1) = mean_std(X0), mean_std(X1)
+    rate_direct = (x0 - x1) / window
+    rate_pred = (pred[0][1] - pred[-1][1]) / window
+    spread_pred = float(summ['X_final_std_percent_db']) / 100
+    r = dict(run=work, u_s=o['u'], time=o['time'], window_start=start, window=window,
+             particles=n, samples=o['copies'] * n, drying_model=g.dryingModel,
+             T_in=g.Tin, W_in=g.inletW, X0=g.X0, Hd=g.Hd / 1000,
+             X_start=x0, X_end_direct=x1, X_end_predictor=pred[-1][1],
+             spread_start=s0, spread_direct=s1, spread_predictor=spread_pred,
+             rate_direct=rate_direct, rate_predictor=rate_pred,
+             rate_rel=rate_pred / rate_direct - 1, spread_rel=spread_pred / s1 - 1,
+             Tp_start_C=mean_std(T0)[0] - 273.15, Tp_end_direct_C=mean_std(T1)[0] - 273.15,
+             Tp_end_predictor_C=pred[-1][2],
+             direct_series=direct, predictor_series=pred,
+             visits={k: stats['residence'][k]['samples'] for k in circulationstats.DISTRIBUTIONS},
+             wall_s=sum(float(x) for x in open(os.path.join(work, 'log.wallTime')))
+             if os.path.isfile(os.path.join(work, 'log.wallTime')) else 0.0)
+    lines = [
+        'direct run: %d kernels, %s, inlet %.1f C (W %g), u_s %g m/s, Hd %g m; window %g s from '
+        't = %g s; bed-mean X %.6f -> %.6f kg/kg d.b., kernel T %.2f -> %.2f C'
+        % (n, g.dryingModel, g.Tin - 273.15, g.inletW, o['u'], g.Hd / 1000, window, start, x0, x1,
+           r['Tp_start_C'], r['Tp_end_direct_C']),
+        'predictor (%d samples, the run\'s circulation.json, from the kernels at the start): '
+        'X -> %.6f, kernel T -> %.2f C' % (r['samples'], pred[-1][1], pred[-1][2]),
+        'bed-mean drying rate: direct %.5g, predictor %.5g kg/kg d.b. per s: %+.2f %% '
+        '(drytime.consistency_rate_rel, issue 24: within 5 %%)'
+        % (rate_direct, rate_pred, 100 * r['rate_rel']),
+        'spread (std) of kernel moisture at the end: direct %.5g (at the start %.5g), predictor '
+        '%.5g kg/kg d.b.: %+.1f %% (drytime.consistency_spread_rel, within 20 %%)'
+        % (s1, s0, spread_pred, 100 * r['spread_rel']),
+    ]
+    r['rate_unlimited_air'] = (unlimited[0][1] - unlimited[-1][1]) / window
+    lines.append('  with unlimited air (every region at the inlet air) the predictor dries at '
+                 '%.5g kg/kg per s, %.2f x the direct run: the rate is set by the gas the '
+                 'kernels see' % (r['rate_unlimited_air'], r['rate_unlimited_air'] / rate_direct))
+    lines.append('  per region, predictor / CFD-DEM (circulation.json): holdup share, k_m [m/s], '
+                 'gas T [C] and W [kg/kg] the kernels saw')
+    regions = {}
+    with open(os.path.join(out, 'spouted_regions.csv')) as f:
+        head = f.readline().strip().split(',')
+        for line in f:
+            v = dict(zip(head, line.strip().split(',')))
+            cfd = stats['conditions'][v['region']]
+            regions[v['region']] = dict(
+                holdup=(float(v['holdup_share_predicted']), float(v['holdup_share_file'])),
+                km=(float(v['km_m_per_s']), cfd['km']), h=(float(v['h_W_per_m2K']), cfd['h']),
+                Tgas_C=(float(v['T_gas_C']), cfd['Tgas'] - 273.15),
+                W=(float(v['W_gas_kg_per_kg']), cfd.get('humidityRatio', float('nan'))),
+                Tparticle_C=cfd['Tparticle'] - 273.15)
+            q = regions[v['region']]
+            lines.append('    %-11s %.3f / %.3f, k_m %.4f / %.4f, T %.1f / %.1f, W %.4f / %.4f'
+                         % ((v['region'],) + q['holdup'] + q['km'] + q['Tgas_C'] + q['W']))
+    r['regions'] = regions
+    return r, lines
+
+
 def main(argv):
     o = options(argv)
     numbers = json.load(open('dryingTime.json')) if os.path.isfile('dryingTime.json') else {}
-    r, lines = statistics(o)
-    numbers.setdefault('statistics', {})['u%g' % o['u']] = r
+    if o['part'] == 'consistency':
+        r, lines = consistency(o)
+        numbers['consistency'] = r
+        text = ['the long-time predictor against a direct CFD-DEM drying run (issue 24 item 3); '
+                'run in %s, spoutFoam wall time %.0f min' % (r['run'], r['wall_s'] / 60)]
+    else:
+        r, lines = statistics(o)
+        numbers.setdefault('statistics', {})['u%g' % o['u']] = r
+        text = ['circulation statistics of the bed with draft plates: %d particles, u_s = %g '
+                'm/s, hot air, %g s, statistics over the last %g s; run in %s, spoutFoam wall '
+                'time %.0f min' % (r['particles'], o['u'], o['time'], o['average'], r['run'],
+                                   r['wall_s'] / 60)]
     with open('dryingTime.json', 'w') as f:
         json.dump(numbers, f, indent=1, sort_keys=True)
-    text = ['circulation statistics of the bed with draft plates: %d particles, u_s = %g m/s, '
-            'hot air, %g s, statistics over the last %g s; run in %s, spoutFoam wall time %.0f min'
-            % (r['particles'], o['u'], o['time'], o['average'], r['run'], r['wall_s'] / 60)]
     text += lines
     out = '\n'.join(text) + '\n'
     sys.stdout.write(out)

@@ -527,7 +527,7 @@ def drying_section(case):
 def drytime_section(case):
     """The long-time predictor's side of the CFD-DEM from protocols/
     dryingTime's dryingTime.json: the circulation statistics per operating
-    point."""
+    point, and the predictor against a direct drying run (part consistency)."""
     r = read_json(case, 'dryingTime.json', 'protocols/dryingTime with its options')
     rows, keys, pngs = [], [], []
     for label, st in sorted(r.get('statistics', {}).items()):
@@ -554,6 +554,37 @@ def drytime_section(case):
                      + settings))
         pngs.append(('dryingTime_circulation_%s.png' % label,
                      'drytime_circulation_%s.png' % label))
+    c = r.get('consistency')
+    if c:
+        settings = ('%d particles, draft plates at Hd = %g m, u_s = %g m/s, inlet %.0f C (W %g), '
+                    '%s from X_0 %.4g; window %g s from t = %g s; predictor %d samples from the '
+                    "kernels at the window's start, the run's own statistics"
+                    % (c['particles'], c['Hd'], c['u_s'], c['T_in'] - 273.15, c['W_in'],
+                       c['drying_model'], c['X0'], c['window'], c['window_start'], c['samples']))
+        wall = '%.2f h' % (c['wall_s'] / 3600)
+        rows += [('bed-mean drying rate over the window, predictor / direct CFD-DEM',
+                  '%.4g / %.4g kg/kg d.b. per s: %+.1f %%'
+                  % (c['rate_predictor'], c['rate_direct'], 100 * c['rate_rel']),
+                  'within 5 % (issue 24)', settings, wall),
+                 ("spread (std) of the kernels' moisture at the window's end, predictor / direct",
+                  '%.4g / %.4g kg/kg d.b. (%.4g at the start): %+.1f %%'
+                  % (c['spread_predictor'], c['spread_direct'], c['spread_start'],
+                     100 * c['spread_rel']), 'within 20 % (issue 24)', settings, wall)]
+        if 'regions' in c and 'rate_unlimited_air' in c:
+            rows.append(('gas the kernels saw, predictor / CFD-DEM: T [C] and W per region; the '
+                         'rate with unlimited air',
+                         '; '.join('%s %.0f / %.0f, %.4f / %.4f'
+                                   % ((k,) + tuple(c['regions'][k]['Tgas_C'])
+                                      + tuple(c['regions'][k]['W']))
+                                   for k in ('spout', 'fountain', 'downcomer', 'entrainment'))
+                         + '; unlimited air %.2f x the direct rate'
+                         % (c['rate_unlimited_air'] / c['rate_direct']), '', settings, wall))
+        keys += [('drytime.consistency_rate_rel', '%.3g' % c['rate_rel'], '', '0',
+                  'predictor / direct - 1 of the bed-mean drying rate; direct %.4g kg/kg/s; '
+                  % c['rate_direct'] + settings),
+                 ('drytime.consistency_spread_rel', '%.3g' % c['spread_rel'], '', '0',
+                  "predictor / direct - 1 of the std of the kernels' moisture at the end; direct "
+                  '%.4g kg/kg; ' % c['spread_direct'] + settings)]
     return rows, keys, [p for p in pngs if os.path.isfile(os.path.join(case, p[0]))]
 
 

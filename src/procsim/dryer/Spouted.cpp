@@ -148,6 +148,7 @@ public:
     std::vector<double> lastVapour;    // the vapour density the last step's particles saw [kg/m3]
     double gasWater = 0, gasEnergy = 0, initialWater = 0, initialEnthalpy = 0, exchangeScale = 0;
     std::vector<double> holdupTime;
+    std::vector<double> gasTTime, gasWTime; // the compartments' gas times dt
     std::vector<Residence> residence; // the regions', prepared for drawing
     std::vector<double> occupancy;    // kernels per region at the step's start
 
@@ -174,13 +175,21 @@ Bed::Bed(const Case& cs) : c(cs)
     rng.resize(n);
     state.assign(n * width, 0.0);
     holdupTime.assign(c.regions.size(), 0.0);
+    gasTTime.assign(c.regions.size(), 0.0);
+    gasWTime.assign(c.regions.size(), 0.0);
     for (const Region& r : c.regions)
     {
         residence.push_back(r.residence);
         residence.back().prepare();
     }
+    const std::size_t rows = c.initialStateX.size();
     for (std::size_t i = 0; i < n; ++i)
     {
+        if (rows)
+        {
+            X[i] = c.initialStateX[i % rows];
+            T[i] = c.initialStateT[i % rows];
+        }
         rng[i] = c.seed * 0x2545F4914F6CDD1DULL + i;
         c.drying->initialise(X[i], width ? &state[i * width] : nullptr);
         if (c.circulating) place(i);
@@ -349,6 +358,11 @@ void Bed::step(double dt)
     Exchange ex(nr);
     maxSegmentChange = 0;
     solveGas();
+    for (std::size_t r = 0; r < nr; ++r)
+    {
+        gasTTime[r] += seen.region[r].T * dt;
+        gasWTime[r] += seen.region[r].W * dt;
+    }
     for (std::size_t i = 0; i < X.size(); ++i) advance(i, dt, ex);
     for (std::size_t r = 0; r < nr; ++r)
     {
@@ -459,6 +473,11 @@ void finish(Bed& bed, double heaterJ)
     double total = 0;
     for (const double h : bed.holdupTime) total += h;
     for (const double h : bed.holdupTime) r.holdup.push_back(total > 0 ? h / total : 0.0);
+    for (std::size_t k = 0; k < bed.gasTTime.size(); ++k)
+    {
+        r.gasT.push_back(bed.t > 0 ? bed.gasTTime[k] / bed.t : bed.seen.region[k].T);
+        r.gasW.push_back(bed.t > 0 ? bed.gasWTime[k] / bed.t : bed.seen.region[k].W);
+    }
     r.moisture = bed.X;
     r.temperature = bed.T;
 }

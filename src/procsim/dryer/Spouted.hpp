@@ -17,7 +17,10 @@
 // count/samples, uniform within the bin). At t = 0 the samples are placed as
 // the stationary circulation has them: region r with probability
 // mean_r / sum of means, the time left there the residual of a length-biased
-// draw (renewal theory), so the bed starts at its measured holdup. In a
+// draw (renewal theory), so the bed starts at its measured holdup. Each
+// sample starts at the case's uniform moisture and temperature, or with
+// bed.initial_state at those of one kernel of a CFD-DEM particle file
+// (sample i the row i mod rows), its region drawn as above. In a
 // region over a segment tau (a step cut at residence ends) the kernel is
 // advanced exactly as the CFD-DEM's coupling step advances it (the
 // singleKernel case's sequence): the drying model's advanceWithLatentHeat at
@@ -94,6 +97,7 @@ struct Region
     double hFile = 0, kmFile = 0;  // the statistics' measured values (0: none)
     double holdupShare = 0;        // the statistics' holdup / particles (0: none)
     double gasTemperatureFile = 0; // [K] (0: none)
+    double gasHumidityFile = -1;   // the statistics' humidity ratio [kg/kg dry air] (-1: none)
     Residence residence;           // empty without circulation
     int path = 0;                  // gas path: 0 spout, 1 seepage
     int gasRank = 0;               // its place along the path (0 first)
@@ -129,6 +133,10 @@ struct Case
     // the bed
     double bedParticles = 1, diameter = 8e-3, dryMass = 2.5e-4, initialX = 0.3333, initialC = 25;
     double dryHeatCapacity = 1465;
+    // bed.initial_state: per-kernel moisture [kg/kg d.b.] and temperature [K]
+    // (sample i starts as row i mod rows); empty: initialX, initialC for all
+    std::string initialStateFile;
+    std::vector<double> initialStateX, initialStateT;
     GasProperties gas{};
     std::shared_ptr<const spoutlab::DryingModel> drying;
     std::string dryingName;
@@ -178,6 +186,7 @@ struct Result
     double sorptionJ = 0; // heat of sorption taken by the bound water
     long steps = 0, segments = 0;
     std::vector<double> holdup;      // time-averaged share of the samples per region
+    std::vector<double> gasT, gasW;  // time-averaged gas the samples of each region saw [K], [kg/kg]
     std::vector<double> moisture;    // final X of every sample
     std::vector<double> temperature; // final T_p of every sample [K]
 };

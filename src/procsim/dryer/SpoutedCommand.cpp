@@ -72,7 +72,8 @@ void writeRegions(const std::string& path, const Case& c, const Result& r)
     CsvWriter s(path,
                 {"region", "heatTransferModel", "slipRe", "voidage", "h_W_per_m2K", "h_file_W_per_m2K",
                  "h_diff_percent", "km_m_per_s", "km_file_m_per_s", "km_diff_percent", "residence_mean_s",
-                 "residence_samples", "holdup_share_predicted", "holdup_share_file"});
+                 "residence_samples", "holdup_share_predicted", "holdup_share_file", "T_gas_C",
+                 "T_gas_file_C", "W_gas_kg_per_kg", "W_gas_file_kg_per_kg"});
     for (std::size_t i = 0; i < c.regions.size(); ++i)
     {
         const auto& g = c.regions[i];
@@ -81,7 +82,9 @@ void writeRegions(const std::string& path, const Case& c, const Result& r)
             formatNumber(g.h, 8), formatNumber(g.hFile, 8), formatNumber(relDiff(g.h, g.hFile), 4),
             formatNumber(g.km, 8), formatNumber(g.kmFile, 8), formatNumber(relDiff(g.km, g.kmFile), 4),
             formatNumber(g.residence.mean, 8), std::to_string(g.residence.samples),
-            formatNumber(r.holdup[i], 6), formatNumber(g.holdupShare, 6)});
+            formatNumber(r.holdup[i], 6), formatNumber(g.holdupShare, 6), formatNumber(r.gasT[i] - 273.15, 6),
+            g.gasTemperatureFile > 0 ? formatNumber(g.gasTemperatureFile - 273.15, 6) : "nan",
+            formatNumber(r.gasW[i], 6), g.gasHumidityFile >= 0 ? formatNumber(g.gasHumidityFile, 6) : "nan"});
     }
     s.close();
 }
@@ -110,7 +113,7 @@ std::vector<std::pair<std::string, std::string>> summary(const Case& c, const Re
             {"end_time_h", f(r.endTime / 3600, 4)},
             {"M_initial_percent_wb", f(wetBasis(c.initialX), 3)},
             {"M_final_percent_wb", f(wetBasis(r.finalX), 3)},
-            {"X_final_std_percent_db", f(100 * r.finalStd, 4)},
+            {"X_final_std_percent_db", formatNumber(100 * r.finalStd, 6)},
             {"T_kernel_max_C", f(r.highestC, 3)},
             {"kernel_temperature_limit_C", f(c.limitC, 2)},
             {"time_any_kernel_above_limit_h", f(r.timeAnyAbove / 3600, 4)},
@@ -140,6 +143,16 @@ void printSummary(const Case& c, const Result& r, const BatchMetrics& m)
                        for (const auto& g : c.regions) s += g.residence.mean;
                        return s;
                    }());
+    if (!c.initialStateFile.empty())
+    {
+        const auto& x = c.initialStateX;
+        double var = 0;
+        for (const double v : x) var += (v - c.initialX) * (v - c.initialX);
+        fmt::print("initial state: {} ({} kernels, sample i the row i mod {}): X mean {:.5f}, std {:.5f} "
+                   "kg/kg d.b., T mean {:.2f} degC\n",
+                   c.initialStateFile, x.size(), x.size(), c.initialX,
+                   std::sqrt(var / static_cast<double>(x.size())), c.initialC);
+    }
     if (!c.statistics.empty()
         && (std::fabs(c.statisticsInletC - c.inletC) > 0.5
             || std::fabs(c.statisticsInletW - c.inletW) > 1e-4))

@@ -12,6 +12,7 @@
 #include "Psychrometrics.hpp"
 #include "SorptionIsotherm.hpp"
 #include "common/Checked.hpp"
+#include "common/Csv.hpp"
 #include "common/Format.hpp"
 #include "common/YamlInput.hpp"
 
@@ -156,6 +157,7 @@ void readStatistics(const std::string& file, Case& c, const CaseGeometry& g, con
         r.hFile = k.within("h", 0, 1e6, "W/m2/K");
         r.kmFile = k.within("km", 0, 1e3, "m/s");
         r.gasTemperatureFile = k.within("Tgas", 0, 2000, "K");
+        r.gasHumidityFile = k.within("humidityRatio", -1, 0, 1);
         r.holdupShare = k.within("holdup", 0, particles) / particles;
         r.measured = true;
         c.regions.push_back(r);
@@ -254,16 +256,57 @@ void readOperation(const YamlInput& in, Case& c, CaseGeometry& g)
         c.airFlow = g.massFlow = op.within("air_mass_flow_kg_per_s", 1e-9, 1e4, "kg/s");
 }
 
+// bed.initial_state: a CSV of one kernel a row, columns moisture_db [kg/kg
+// d.b.] and temperature_C (and an optional particle id, not used), as the
+// protocol dryingTime exports a CFD-DEM particle file
+void readInitialState(const std::string& path, Case& c)
+{
+    const CsvTable t = readCsv(path);
+    t.rejectUnknownColumns({"id", "moisture_db", "temperature_C"}, path);
+    const std::size_t cx = t.column("moisture_db", path), ct = t.column("temperature_C", path);
+    if (t.rows.empty()) throw InputError(path + ": no kernel rows (expected one row per kernel)");
+    double sx = 0, st = 0;
+    for (std::size_t r = 0; r < t.rows.size(); ++r)
+    {
+        const double x = t.rows[r][cx], tc = t.rows[r][ct];
+        const std::string where = path + ": line " + std::to_string(t.lines[r]);
+        if (!(x >= 0 && x <= 5))
+            throw InputError(where + ": column 'moisture_db' expected a moisture from 0 to 5 kg/kg dry "
+                                     "basis, got '" + formatNumber(x) + "'");
+        if (!(tc >= -20 && tc <= 200))
+            throw InputError(where + ": column 'temperature_C' expected a temperature from -20 to 200 "
+                                     "degC, got '" + formatNumber(tc) + "'");
+        c.initialStateX.push_back(x);
+        c.initialStateT.push_back(tc + 273.15);
+        sx += x;
+        st += tc;
+    }
+    c.initialStateFile = path;
+    c.initialX = sx / static_cast<double>(t.rows.size());
+    c.initialC = st / static_cast<double>(t.rows.size());
+}
+
 void readBed(const YamlInput& in, Case& c)
 {
     const YamlInput bed = in.child("bed");
     bed.rejectUnknown({"particles", "kernel_diameter_m", "kernel_dry_mass_kg", "initial_moisture_db",
-                       "initial_temperature_C", "kernelHeatCapacity"});
+                       "initial_temperature_C", "initial_state", "kernelHeatCapacity"});
     c.bedParticles = bed.within("particles", 1, 1e10);
     c.diameter = bed.within("kernel_diameter_m", 1e-5, 0.1, "m");
     c.dryMass = bed.within("kernel_dry_mass_kg", 1e-12, 1, "kg");
-    c.initialX = bed.within("initial_moisture_db", 0, 5, "kg/kg dry basis");
-    c.initialC = bed.within("initial_temperature_C", -20, 200, "degC");
+    if (bed.has("initial_state"))
+    {
+        for (const char* k : {"initial_moisture_db", "initial_temperature_C"})
+            if (bed.has(k))
+                throw bed.error(k, "no uniform initial state beside initial_state (its kernels' own)");
+        readInitialState(
+            relativeTo(std::filesystem::path(in.file()).parent_path().string(), bed.text("initial_state")), c);
+    }
+    else
+    {
+        c.initialX = bed.within("initial_moisture_db", 0, 5, "kg/kg dry basis");
+        c.initialC = bed.within("initial_temperature_C", -20, 200, "degC");
+    }
     c.dryHeatCapacity =
         bed.within("kernelHeatCapacity", spoutlab::corn::kDrySpecificHeat, 100, 1e4, "J/kg/K");
     const YamlInput gas = in.child("gas");

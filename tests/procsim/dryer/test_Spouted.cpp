@@ -7,7 +7,9 @@
 //  - the same seed gives the same batch to the bit, another seed another;
 //  - a dry kernel heated through a cycle of fixed residences: every kernel
 //    on the analytic lumped curve after whole cycles, whatever its phase;
-//  - the stationary placement: the bed holds the regions' measured shares.
+//  - the stationary placement: the bed holds the regions' measured shares;
+//  - bed.initial_state: samples start at their kernels' moisture and
+//    temperature; a row out of range stops with one line.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -235,5 +237,49 @@ TEST(Spouted, TheBedHoldsTheMeasuredShares)
         const double share = c.regions[k].residence.histogramMean() / total;
         // binomial sampling error of 10000 samples, 4 sigma
         EXPECT_NEAR(r.holdup[k], share, 4 * std::sqrt(share * (1 - share) / 1e4) + 1e-4) << c.regions[k].name;
+    }
+}
+
+TEST(Spouted, KernelsStartAtTheirOwnInitialState)
+{
+    // data/spouted_initial_state.csv: three kernels (X 0.30, 0.33, 0.36 at
+    // 30, 40, 50 C); six samples take the rows in turn, twice each
+    Case c = readCase(std::string(DRYER_DATA) + "/spouted_initial_state.yaml");
+    EXPECT_EQ(c.initialStateX.size(), 3u);
+    EXPECT_NEAR(c.initialX, 0.33, 1e-15);
+    EXPECT_NEAR(c.initialC, 40, 1e-12);
+    c.samples = 6;
+    c.duration = 1;
+    c.outputInterval = 1;
+    const Result r = run(c);
+    const SeriesPoint& p = r.series.front();
+    EXPECT_EQ(p.t, 0.0);
+    EXPECT_NEAR(p.xMean, 0.33, 1e-15);
+    EXPECT_EQ(p.xP5, 0.30);
+    EXPECT_EQ(p.xP95, 0.36);
+    EXPECT_NEAR(p.tMeanC, 40, 1e-12);
+    EXPECT_NEAR(p.tMaxC, 50, 1e-12);
+    // samples i and i + 3 start alike: after 1 s (kernel diffusion at 80 C
+    // takes off about 1e-4 kg/kg a second) still within 0.01 of each other
+    ASSERT_EQ(r.moisture.size(), 6u);
+    for (std::size_t i = 0; i < 3; ++i)
+        EXPECT_NEAR(r.moisture[i], r.moisture[i + 3], 0.01) << i;
+}
+
+TEST(Spouted, AnInitialStateOutOfRangeStopsWithOneLine)
+{
+    try
+    {
+        readCase(std::string(DRYER_DATA) + "/spouted_bad_initial_state.yaml");
+        FAIL() << "no error";
+    }
+    catch (const std::exception& e)
+    {
+        const std::string m = e.what();
+        EXPECT_NE(m.find("spouted_bad_initial_state.csv: line 4: column 'moisture_db' expected a moisture "
+                         "from 0 to 5 kg/kg dry basis, got '-0.1'"),
+                  std::string::npos)
+            << m;
+        EXPECT_EQ(m.find('\n'), std::string::npos);
     }
 }
