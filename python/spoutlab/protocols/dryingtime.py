@@ -46,7 +46,6 @@ import sys
 
 from spoutlab import casefiles as sc
 from spoutlab import circulationstats
-from spoutlab import cli
 from spoutlab import spoutedbed
 from spoutlab.protocols import heattransfer
 
@@ -210,6 +209,55 @@ def summary_values(path):
     return dict(line.strip().split(',', 1) for line in list(open(path))[1:])
 
 
+def run_predictor(out):
+    """procsim dryer spouted on out/case.yaml, and the same with unlimited
+    air; the two series (time, X, T)."""
+    procsim = shutil.which('procsim') or sys.exit('dryingTime: procsim not on PATH (. etc/bashrc)')
+    with open(os.path.join(out, 'log.procsim'), 'w') as log:
+        if subprocess.call([procsim, 'dryer', 'spouted', 'case.yaml', '--out', '.'], cwd=out,
+                           stdout=log, stderr=subprocess.STDOUT) != 0:
+            sys.exit('dryingTime: procsim dryer spouted failed, see %s/log.procsim'
+                     % out)
+    # the same with unlimited air (every region at the inlet air): how much
+    # the gas's humidification limits the rate (a diagnosis, not compared)
+    inlet = os.path.join(out, 'unlimitedAir')
+    os.makedirs(inlet, exist_ok=True)
+    with open(os.path.join(out, 'case.yaml')) as f, \
+            open(os.path.join(inlet, 'case.yaml'), 'w') as g_:
+        g_.write(f.read().replace('gasModel: compartments', 'gasModel: inlet')
+                 .replace('statistics: ../', 'statistics: ../../')
+                 .replace('initial_state: ', 'initial_state: ../'))
+    with open(os.path.join(inlet, 'log.procsim'), 'w') as log:
+        subprocess.call([procsim, 'dryer', 'spouted', 'case.yaml', '--out', '.'], cwd=inlet,
+                        stdout=log, stderr=subprocess.STDOUT)
+    unlimited = series(os.path.join(inlet, 'spouted_series.csv'))
+    pred = series(os.path.join(out, 'spouted_series.csv'))
+    return pred, unlimited
+
+
+def region_comparison(out, stats, lines):
+    """Per region, predictor / CFD-DEM: what the kernels saw (summary lines
+    appended to lines)."""
+    lines.append('  per region, predictor / CFD-DEM (circulation.json): holdup share, k_m [m/s], '
+                 'gas T [C] and W [kg/kg] the kernels saw')
+    regions = {}
+    with open(os.path.join(out, 'spouted_regions.csv')) as f:
+        head = f.readline().strip().split(',')
+        for line in f:
+            v = dict(zip(head, line.strip().split(',')))
+            cfd = stats['conditions'][v['region']]
+            regions[v['region']] = dict(
+                holdup=(float(v['holdup_share_predicted']), float(v['holdup_share_file'])),
+                km=(float(v['km_m_per_s']), cfd['km']), h=(float(v['h_W_per_m2K']), cfd['h']),
+                Tgas_C=(float(v['T_gas_C']), cfd['Tgas'] - 273.15),
+                W=(float(v['W_gas_kg_per_kg']), cfd.get('humidityRatio', float('nan'))),
+                Tparticle_C=cfd['Tparticle'] - 273.15)
+            q = regions[v['region']]
+            lines.append('    %-11s %.3f / %.3f, k_m %.4f / %.4f, T %.1f / %.1f, W %.4f / %.4f'
+                         % ((v['region'],) + q['holdup'] + q['km'] + q['Tgas_C'] + q['W']))
+    return regions
+
+
 def consistency(o):
     """The direct run and the predictor from its state over the same
     window; their numbers and summary lines."""
@@ -236,27 +284,8 @@ def consistency(o):
     stats = circulationstats.read(os.path.join(work, 'circulation.json'))
     window = o['time'] - start
     predictor_case(g, o, work, n, window, stats['residence']['spout']['binWidth'])
-    procsim = shutil.which('procsim') or sys.exit('dryingTime: procsim not on PATH (. etc/bashrc)')
     out = os.path.join(work, 'predictor')
-    with open(os.path.join(out, 'log.procsim'), 'w') as log:
-        if subprocess.call([procsim, 'dryer', 'spouted', 'case.yaml', '--out', '.'], cwd=out,
-                           stdout=log, stderr=subprocess.STDOUT) != 0:
-            sys.exit('dryingTime: procsim dryer spouted failed, see %s/log.procsim'
-                     % out)
-    # the same with unlimited air (every region at the inlet air): how much
-    # the gas's humidification limits the rate (a diagnosis, not compared)
-    inlet = os.path.join(out, 'unlimitedAir')
-    os.makedirs(inlet, exist_ok=True)
-    with open(os.path.join(out, 'case.yaml')) as f, \
-            open(os.path.join(inlet, 'case.yaml'), 'w') as g_:
-        g_.write(f.read().replace('gasModel: compartments', 'gasModel: inlet')
-                 .replace('statistics: ../', 'statistics: ../../')
-                 .replace('initial_state: ', 'initial_state: ../'))
-    with open(os.path.join(inlet, 'log.procsim'), 'w') as log:
-        subprocess.call([procsim, 'dryer', 'spouted', 'case.yaml', '--out', '.'], cwd=inlet,
-                        stdout=log, stderr=subprocess.STDOUT)
-    unlimited = series(os.path.join(inlet, 'spouted_series.csv'))
-    pred = series(os.path.join(out, 'spouted_series.csv'))
+    pred, unlimited = run_predictor(out)
     summ = summary_values(os.path.join(out, 'spouted_summary.csv'))
     # the direct run's bed-mean moisture at every write time of the window
     direct = []
@@ -299,24 +328,7 @@ def consistency(o):
     lines.append('  with unlimited air (every region at the inlet air) the predictor dries at '
                  '%.5g kg/kg per s, %.2f x the direct run: the rate is set by the gas the '
                  'kernels see' % (r['rate_unlimited_air'], r['rate_unlimited_air'] / rate_direct))
-    lines.append('  per region, predictor / CFD-DEM (circulation.json): holdup share, k_m [m/s], '
-                 'gas T [C] and W [kg/kg] the kernels saw')
-    regions = {}
-    with open(os.path.join(out, 'spouted_regions.csv')) as f:
-        head = f.readline().strip().split(',')
-        for line in f:
-            v = dict(zip(head, line.strip().split(',')))
-            cfd = stats['conditions'][v['region']]
-            regions[v['region']] = dict(
-                holdup=(float(v['holdup_share_predicted']), float(v['holdup_share_file'])),
-                km=(float(v['km_m_per_s']), cfd['km']), h=(float(v['h_W_per_m2K']), cfd['h']),
-                Tgas_C=(float(v['T_gas_C']), cfd['Tgas'] - 273.15),
-                W=(float(v['W_gas_kg_per_kg']), cfd.get('humidityRatio', float('nan'))),
-                Tparticle_C=cfd['Tparticle'] - 273.15)
-            q = regions[v['region']]
-            lines.append('    %-11s %.3f / %.3f, k_m %.4f / %.4f, T %.1f / %.1f, W %.4f / %.4f'
-                         % ((v['region'],) + q['holdup'] + q['km'] + q['Tgas_C'] + q['W']))
-    r['regions'] = regions
+    r['regions'] = region_comparison(out, stats, lines)
     return r, lines
 
 

@@ -149,8 +149,8 @@ public:
     double gasWater = 0, gasEnergy = 0, initialWater = 0, initialEnthalpy = 0, exchangeScale = 0;
     std::vector<double> holdupTime;
     std::vector<double> gasTTime, gasWTime; // the compartments' gas times dt
-    std::vector<Residence> residence; // the regions', prepared for drawing
-    std::vector<double> occupancy;    // kernels per region at the step's start
+    std::vector<Residence> residence;       // the regions', prepared for drawing
+    std::vector<double> occupancy;          // kernels per region at the step's start
 
 private:
     void place(std::size_t i);

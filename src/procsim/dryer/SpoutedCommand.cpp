@@ -69,11 +69,10 @@ double relDiff(double model, double file)
 
 void writeRegions(const std::string& path, const Case& c, const Result& r)
 {
-    CsvWriter s(path,
-                {"region", "heatTransferModel", "slipRe", "voidage", "h_W_per_m2K", "h_file_W_per_m2K",
-                 "h_diff_percent", "km_m_per_s", "km_file_m_per_s", "km_diff_percent", "residence_mean_s",
-                 "residence_samples", "holdup_share_predicted", "holdup_share_file", "T_gas_C",
-                 "T_gas_file_C", "W_gas_kg_per_kg", "W_gas_file_kg_per_kg"});
+    CsvWriter s(path, {"region", "heatTransferModel", "slipRe", "voidage", "h_W_per_m2K", "h_file_W_per_m2K",
+                       "h_diff_percent", "km_m_per_s", "km_file_m_per_s", "km_diff_percent",
+                       "residence_mean_s", "residence_samples", "holdup_share_predicted", "holdup_share_file",
+                       "T_gas_C", "T_gas_file_C", "W_gas_kg_per_kg", "W_gas_file_kg_per_kg"});
     for (std::size_t i = 0; i < c.regions.size(); ++i)
     {
         const auto& g = c.regions[i];

@@ -271,11 +271,15 @@ void readInitialState(const std::string& path, Case& c)
         const double x = t.rows[r][cx], tc = t.rows[r][ct];
         const std::string where = path + ": line " + std::to_string(t.lines[r]);
         if (!(x >= 0 && x <= 5))
-            throw InputError(where + ": column 'moisture_db' expected a moisture from 0 to 5 kg/kg dry "
-                                     "basis, got '" + formatNumber(x) + "'");
+            throw InputError(where
+                             + ": column 'moisture_db' expected a moisture from 0 to 5 kg/kg dry "
+                               "basis, got '"
+                             + formatNumber(x) + "'");
         if (!(tc >= -20 && tc <= 200))
-            throw InputError(where + ": column 'temperature_C' expected a temperature from -20 to 200 "
-                                     "degC, got '" + formatNumber(tc) + "'");
+            throw InputError(where
+                             + ": column 'temperature_C' expected a temperature from -20 to 200 "
+                               "degC, got '"
+                             + formatNumber(tc) + "'");
         c.initialStateX.push_back(x);
         c.initialStateT.push_back(tc + 273.15);
         sx += x;
@@ -300,7 +304,8 @@ void readBed(const YamlInput& in, Case& c)
             if (bed.has(k))
                 throw bed.error(k, "no uniform initial state beside initial_state (its kernels' own)");
         readInitialState(
-            relativeTo(std::filesystem::path(in.file()).parent_path().string(), bed.text("initial_state")), c);
+            relativeTo(std::filesystem::path(in.file()).parent_path().string(), bed.text("initial_state")),
+            c);
     }
     else
     {

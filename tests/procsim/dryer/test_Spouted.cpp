@@ -262,8 +262,7 @@ TEST(Spouted, KernelsStartAtTheirOwnInitialState)
     // samples i and i + 3 start alike: after 1 s (kernel diffusion at 80 C
     // takes off about 1e-4 kg/kg a second) still within 0.01 of each other
     ASSERT_EQ(r.moisture.size(), 6u);
-    for (std::size_t i = 0; i < 3; ++i)
-        EXPECT_NEAR(r.moisture[i], r.moisture[i + 3], 0.01) << i;
+    for (std::size_t i = 0; i < 3; ++i) EXPECT_NEAR(r.moisture[i], r.moisture[i + 3], 0.01) << i;
 }
 
 TEST(Spouted, AnInitialStateOutOfRangeStopsWithOneLine)
