@@ -168,9 +168,9 @@ std::size_t CirculationStatistics::bins() const
     return n;
 }
 
-std::vector<double> CirculationStatistics::pack(std::size_t minBins) const
+std::vector<double> CirculationStatistics::pack(std::size_t minBins, bool countsSampleTimes) const
 {
-    std::vector<double> p = {sampleTimes_, skipped_};
+    std::vector<double> p = {countsSampleTimes ? sampleTimes_ : 0.0, skipped_};
     p.insert(p.end(), entries_.begin(), entries_.end());
     p.insert(p.end(), occupancy_.begin(), occupancy_.end());
     p.insert(p.end(), openStart_.begin(), openStart_.end());

@@ -159,8 +159,11 @@ public:
                                                              double dt);
 
     // the packed histograms hold at least `bins` bins each (ranks pack to
-    // the same length); bins() is this one's longest histogram
-    std::vector<double> pack(std::size_t bins = 0) const;
+    // the same length); bins() is this one's longest histogram. Ranks that
+    // hold parts of one bed sample it at the same times: only one of them
+    // (countsSampleTimes) may count those times in its pack, or the sum
+    // over the ranks would count every time once per rank.
+    std::vector<double> pack(std::size_t bins = 0, bool countsSampleTimes = true) const;
     std::size_t bins() const;
     void unpack(const std::vector<double>& packed); // throws std::invalid_argument on a size mismatch
     void add(const std::vector<double>& packed);

@@ -431,7 +431,7 @@ void CirculationCoupling::write
     // from zero, so a restart (the totals back on the master) adds the same
     unsigned long bins = stats_.bins();
     MPI_Allreduce(MPI_IN_PLACE, &bins, 1, MPI_UNSIGNED_LONG, MPI_MAX, MPI_COMM_WORLD);
-    std::vector<double> all = stats_.pack(bins);
+    std::vector<double> all = stats_.pack(bins, Foam::Pstream::master());
     all.insert(all.end(), gas_, gas_ + 3);
     // the visits open at the last sample (the boundary term of Little's law)
     const std::array<double, nCirculationRegions> open =

@@ -361,3 +361,36 @@ TEST(CirculationStatistics, ElementWiseSumOfPacksIsTheirAdd)
     one.add(two.pack(bins));
     EXPECT_EQ(reduced.pack(bins), one.pack(bins));
 }
+
+// Two ranks holding one particle each of a two-particle bed sample it at the
+// same times: their reduced statistics are those of one rank holding both,
+// the holdups included (each time counted once, not once per rank).
+TEST(CirculationStatistics, RanksSharingSamplingTimesReduceToTheWholeBed)
+{
+    CirculationStatistics whole(bed, 0.0, 1.0, 0.05), rankA(bed, 0.0, 1.0, 0.05), rankB(bed, 0.0, 1.0, 0.05);
+    std::vector<double> a = freshTrack(), b = freshTrack(), wa = freshTrack(), wb = freshTrack();
+    const std::vector<Vec3> pathA = repeat(inSpout, 2) + repeat(inFountain, 3) + repeat(inDowncomer, 5);
+    const std::vector<Vec3> pathB = repeat(inDowncomer, 6) + repeat(inEntrainment, 2) + repeat(inSpout, 2);
+    for (std::size_t k = 0; k < pathA.size(); ++k)
+    {
+        const double t = 0.1 * double(k);
+        rankA.observe(t, pathA[k], a.data(), {});
+        rankB.observe(t, pathB[k], b.data(), {});
+        whole.observe(t, pathA[k], wa.data(), {});
+        whole.observe(t, pathB[k], wb.data(), {});
+        rankA.endSample(t);
+        rankB.endSample(t);
+        whole.endSample(t);
+    }
+    const std::size_t bins = std::max(rankA.bins(), rankB.bins());
+    std::vector<double> sum = rankA.pack(bins, true);
+    const std::vector<double> other = rankB.pack(bins, false);
+    for (std::size_t k = 0; k < sum.size(); ++k) sum[k] += other[k];
+    CirculationStatistics reduced(bed, 0.0, 1.0, 0.05);
+    reduced.unpack(sum);
+    EXPECT_EQ(reduced.sampleTimes(), 10.0);
+    // by hand: A is 5 of 10 times in the downcomer, B 6; 2 and 2 in the spout
+    EXPECT_NEAR(reduced.holdup(downcomerRegion), (5.0 + 6.0) / 10, 1e-15);
+    EXPECT_NEAR(reduced.holdup(spoutRegion), (2.0 + 2.0) / 10, 1e-15);
+    EXPECT_EQ(reduced.pack(bins), whole.pack(bins));
+}
