@@ -77,8 +77,10 @@ void transferCoefficients(Case& c)
         // the slip that gives the region's Re in the correlations' definition
         const double slip = r.slipReynolds * c.gas.mu / (r.voidage * c.gas.rho * c.diameter);
         const spoutlab::HeatTransferCell cell{{0, 0, 0}, r.voidage, c.diameter, slip};
-        r.h = model->h(cell, gas);
-        r.km = model->massTransferCoefficient(cell, gas, c.gas.Dv);
+        r.hCorrelation = model->h(cell, gas);
+        r.kmCorrelation = model->massTransferCoefficient(cell, gas, c.gas.Dv);
+        r.h = c.measuredTransfer ? r.hFile : r.hCorrelation;
+        r.km = c.measuredTransfer ? r.kmFile : r.kmCorrelation;
     }
 }
 
@@ -222,6 +224,36 @@ void Bed::place(std::size_t i)
     left[i] = residence[k].drawResidual(u1, u2, u3);
 }
 
+// The gas along its paths, in the gas's order: all of it crosses the
+// entrainment zone at the base (kShared), then spoutShare rises through spout
+// and fountain (path 0) and the rest seeps through the downcomer (path 1).
+struct GasPaths
+{
+    double flow[3], W[3], h[3]; // dry air [kg/s], humidity ratio, enthalpy [J/kg] per path
+    GasPaths(const Case& c, double hIn)
+        : flow{c.airFlow * c.spoutShare, c.airFlow * (1 - c.spoutShare), c.airFlow},
+          W{c.inletW, c.inletW, c.inletW}, h{hIn, hIn, hIn}
+    {}
+    // the gas leaving a region of path p enters the next region of p (of both
+    // paths after the shared zone)
+    void leave(int p, double w, double enthalpy)
+    {
+        const int first = p == kShared ? 0 : p, last = p == kShared ? kShared : p;
+        for (int q = first; q <= last; ++q) W[q] = w, h[q] = enthalpy;
+    }
+    // calls f(region, path) for the regions holding gas, in the gas's order
+    template <class F>
+    static void walk(const Case& c, const GasPaths& paths, F f)
+    {
+        for (int rank = 0; rank < kGasRanks; ++rank)
+            for (std::size_t r = 0; r < c.regions.size(); ++r)
+            {
+                const int p = c.regions[r].path;
+                if (c.regions[r].gasRank == rank && paths.flow[p] > 0) f(r, p);
+            }
+    }
+};
+
 GasField Bed::gasFor(const Exchange& ex, double dt) const
 {
     GasField g;
@@ -230,21 +262,15 @@ GasField Bed::gasFor(const Exchange& ex, double dt) const
     g.outlet = g.region.front();
     g.outletEnthalpy = hIn;
     if (c.gasAtInlet) return g;
-    // each path in the gas's order: spout -> fountain, entrainment -> downcomer
-    const double flow[2] = {c.airFlow * c.spoutShare, c.airFlow * (1 - c.spoutShare)};
-    double W[2] = {c.inletW, c.inletW}, h[2] = {hIn, hIn};
-    for (int rank = 0; rank < 2; ++rank)
-        for (std::size_t r = 0; r < c.regions.size(); ++r)
-        {
-            const Region& reg = c.regions[r];
-            const int p = reg.path;
-            if (reg.gasRank != rank || !(flow[p] > 0)) continue;
-            W[p] += ex.water[r] / (flow[p] * dt);
-            h[p] += ex.energy[r] / (flow[p] * dt);
-            g.region[r] = GasState{psy::temperatureFromEnthalpy(h[p], W[p]) + kKelvin, W[p]};
-        }
-    const double Wout = c.spoutShare * W[0] + (1 - c.spoutShare) * W[1];
-    g.outletEnthalpy = c.spoutShare * h[0] + (1 - c.spoutShare) * h[1];
+    GasPaths paths(c, hIn);
+    GasPaths::walk(c, paths, [&](std::size_t r, int p) {
+        const double W = paths.W[p] + ex.water[r] / (paths.flow[p] * dt);
+        const double h = paths.h[p] + ex.energy[r] / (paths.flow[p] * dt);
+        paths.leave(p, W, h);
+        g.region[r] = GasState{psy::temperatureFromEnthalpy(h, W) + kKelvin, W};
+    });
+    const double Wout = c.spoutShare * paths.W[0] + (1 - c.spoutShare) * paths.W[1];
+    g.outletEnthalpy = c.spoutShare * paths.h[0] + (1 - c.spoutShare) * paths.h[1];
     g.outlet = GasState{psy::temperatureFromEnthalpy(g.outletEnthalpy, Wout) + kKelvin, Wout};
     return g;
 }
@@ -288,17 +314,11 @@ void Bed::solveGas()
         kernels[static_cast<std::size_t>(region[i])] += weight;
         sumT[static_cast<std::size_t>(region[i])] += weight * T[i];
     }
-    const double flow[2] = {c.airFlow * c.spoutShare, c.airFlow * (1 - c.spoutShare)};
-    double W[2] = {c.inletW, c.inletW}, h[2] = {inletEnthalpy(), inletEnthalpy()};
-    for (int rank = 0; rank < 2; ++rank)
-        for (std::size_t r = 0; r < nr; ++r)
-        {
-            const int p = c.regions[r].path;
-            if (c.regions[r].gasRank != rank || !(flow[p] > 0)) continue;
-            seen.region[r] = solveRegion(r, flow[p], W[p], h[p], kernels[r], sumT[r]);
-            W[p] = seen.region[r].W;
-            h[p] = psy::enthalpy(seen.region[r].T - kKelvin, W[p]);
-        }
+    GasPaths paths(c, inletEnthalpy());
+    GasPaths::walk(c, paths, [&](std::size_t r, int p) {
+        seen.region[r] = solveRegion(r, paths.flow[p], paths.W[p], paths.h[p], kernels[r], sumT[r]);
+        paths.leave(p, seen.region[r].W, psy::enthalpy(seen.region[r].T - kKelvin, seen.region[r].W));
+    });
     occupancy = kernels;
 }
 

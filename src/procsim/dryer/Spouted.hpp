@@ -30,16 +30,17 @@
 //
 // Gas. Its residence is milliseconds against the seconds of the particles'
 // changes: a quasi-steady compartment balance of water and energy along its
-// two paths, inlet -> spout -> fountain -> freeboard (spoutShare of the dry
-// air) and inlet -> entrainment -> downcomer (downcomerShare, the seepage),
-// mixed at the outlet. Each region is a well-mixed compartment: the gas the
-// particles there see is the gas leaving it, the gas entering plus what the
-// region's particles gave (water dW, energy sum(dW h_v(T_p)) - q tau) over the
-// dry-air flow of its path. Explicit like the CFD-DEM's exchange: a step's
-// particles see the compartments computed from the step before; the outlet
-// a step books carries exactly that step's exchange, so the balances close to
-// round-off. gasModel inlet holds every region at the inlet air (unlimited
-// air).
+// two paths: all of it crosses the entrainment zone at the base, where the
+// jet meets the kernels that enter the spout, then spoutShare of the dry air
+// rises through spout -> fountain -> freeboard and the rest (downcomerShare)
+// seeps through the downcomer, the two mixed at the outlet. Each region is a
+// well-mixed compartment: the gas the particles there see is the gas leaving
+// it, the gas entering plus what the region's particles gave (water dW,
+// energy sum(dW h_v(T_p)) - q tau) over the dry-air flow through it.
+// Explicit like the CFD-DEM's exchange: a step's particles see the
+// compartments computed from the step before; the outlet a step books
+// carries exactly that step's exchange, so the balances close to round-off.
+// gasModel inlet holds every region at the inlet air (unlimited air).
 //
 // Time step (adaptive): the step is raised (at most x2) or cut (at most /2)
 // towards the largest that keeps (1) the largest change of one kernel's
@@ -85,6 +86,10 @@ struct Residence
     std::vector<double> cumulative, lengthCumulative; // running sums of count_i and count_i (i + 1/2)
 };
 
+// Region::path of the zone all the gas crosses before it splits into the
+// spout's path (0) and the seepage's (1); the places along the gas's way.
+constexpr int kShared = 2, kGasRanks = 3;
+
 // One region of the bed as the predictor uses it.
 struct Region
 {
@@ -92,15 +97,17 @@ struct Region
     std::string correlation;       // the heat-transfer model's name
     double slipReynolds = 0;       // Re = eps rho |Us - u| d / mu
     double voidage = 1;            // eps
-    double h = 0;                  // [W/m2/K], from the correlation
-    double km = 0;                 // [m/s], its Sherwood form
+    double h = 0;                  // [W/m2/K] the kernels exchange with: measured or hCorrelation
+    double km = 0;                 // [m/s], likewise
+    double hCorrelation = 0;       // the region's correlation at its slip Re and voidage
+    double kmCorrelation = 0;      // its Sherwood form
     double hFile = 0, kmFile = 0;  // the statistics' measured values (0: none)
     double holdupShare = 0;        // the statistics' holdup / particles (0: none)
     double gasTemperatureFile = 0; // [K] (0: none)
     double gasHumidityFile = -1;   // the statistics' humidity ratio [kg/kg dry air] (-1: none)
     Residence residence;           // empty without circulation
-    int path = 0;                  // gas path: 0 spout, 1 seepage
-    int gasRank = 0;               // its place along the path (0 first)
+    int path = 0;                  // gas path: 0 spout, 1 seepage, kShared both (before the split)
+    int gasRank = 0;               // its place in the gas's order (0 first)
     bool measured = false;         // its conditions from the statistics
 };
 
@@ -143,6 +150,10 @@ struct Case
     std::vector<Region> regions; // the cycle's order; one region: no circulation
     bool circulating = true;
     bool gasAtInlet = false; // gasModel inlet: unlimited air
+    // transfer_coefficients measured: each region's h and k_m are the
+    // statistics' (the mean over its kernels), not its correlation at the
+    // mean slip Re and voidage, which differ where Re and voidage scatter
+    bool measuredTransfer = false;
     // the batch
     double targetX = 0.1765; // bed-mean moisture that ends it [kg/kg d.b.]
     bool stopAtTarget = true;
@@ -154,8 +165,9 @@ struct Case
     TimeStepControl step;
 };
 
-// h and k_m of every region from its slip Re and voidage through its
-// correlation (the physics core's), at the case's gas and kernel diameter.
+// h and k_m of every region: its correlation's (the physics core's) from
+// its slip Re and voidage at the case's gas and kernel diameter, and the
+// measured ones instead where the case takes them (measuredTransfer).
 void transferCoefficients(Case& c);
 
 struct SeriesPoint

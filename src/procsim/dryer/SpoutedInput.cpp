@@ -30,7 +30,7 @@ struct RegionPlace
     int path, rank;
 };
 const std::map<std::string, RegionPlace> kRegions = {
-    {"spout", {0, 0}}, {"fountain", {0, 1}}, {"entrainment", {1, 0}}, {"downcomer", {1, 1}}};
+    {"entrainment", {kShared, 0}}, {"spout", {0, 1}}, {"fountain", {0, 2}}, {"downcomer", {1, 1}}};
 const char* const kGeometry[] = {"Wd", "He", "Hd", "plateThickness", "width", "depth"};
 
 // a physics-core input error (model settings) as procsim's
@@ -156,6 +156,9 @@ void readStatistics(const std::string& file, Case& c, const CaseGeometry& g, con
         r.voidage = k.within("voidage", 1e-3, 1);
         r.hFile = k.within("h", 0, 1e6, "W/m2/K");
         r.kmFile = k.within("km", 0, 1e3, "m/s");
+        for (const char* key : {"h", "km"})
+            if (c.measuredTransfer && !(k.within(key, 0, 1e6) > 0))
+                throw k.error(key, "a measured value above 0 (the case's transfer_coefficients: measured)");
         r.gasTemperatureFile = k.within("Tgas", 0, 2000, "K");
         r.gasHumidityFile = k.within("humidityRatio", -1, 0, 1);
         r.holdupShare = k.within("holdup", 0, particles) / particles;
@@ -209,6 +212,13 @@ void readRegions(const YamlInput& in, Case& c, const std::string& still)
                     return s;
                 }());
         const bool measured = r.measured;
+        if (!measured && c.measuredTransfer)
+            throw in.error("transfer_coefficients", "correlation: region '" + r.name
+                                                        + "' has no measured h and k_m in the statistics");
+        for (const char* key : {"slipRe", "voidage"})
+            if (c.measuredTransfer && one.has(key))
+                throw one.error(key, std::string("no override with transfer_coefficients measured (its "
+                                                 "kernels exchange with the measured h and k_m)"));
         r.slipReynolds =
             measured ? one.within("slipRe", r.slipReynolds, 0, 1e6) : one.within("slipRe", 0, 1e6);
         r.voidage = measured ? one.within("voidage", r.voidage, 1e-3, 1) : one.within("voidage", 1e-3, 1);
@@ -378,6 +388,7 @@ Case readCase(const std::string& path)
                       "dryingModel",
                       "regions",
                       "gasModel",
+                      "transfer_coefficients",
                       "target_moisture_wb_percent",
                       "stop_at_target",
                       "kernel_temperature_limit_C",
@@ -404,7 +415,16 @@ Case readCase(const std::string& path)
     if (gasModel != "compartments" && gasModel != "inlet")
         throw in.error("gasModel", "compartments or inlet");
     c.gasAtInlet = gasModel == "inlet";
-    if (c.circulating || in.has("statistics"))
+    const bool withStatistics = c.circulating || in.has("statistics");
+    const std::string transfer =
+        in.text("transfer_coefficients", withStatistics ? "measured" : "correlation");
+    if (transfer != "measured" && transfer != "correlation")
+        throw in.error("transfer_coefficients", "measured or correlation");
+    if (transfer == "measured" && !withStatistics)
+        throw in.error("transfer_coefficients",
+                       "correlation without statistics (measured h and k_m are theirs)");
+    c.measuredTransfer = transfer == "measured";
+    if (withStatistics)
     {
         c.statistics = relativeTo(std::filesystem::path(path).parent_path().string(), in.text("statistics"));
         readStatistics(c.statistics, c, g, in.child("regions"));
@@ -415,7 +435,7 @@ Case readCase(const std::string& path)
     checkTarget(in, c, modelProps);
     if (c.circulating && !c.gasAtInlet)
         for (const Region& r : c.regions)
-            if ((r.path == 0 ? c.spoutShare : 1 - c.spoutShare) < 1e-3)
+            if (r.path != kShared && (r.path == 0 ? c.spoutShare : 1 - c.spoutShare) < 1e-3)
                 throw InputError(c.statistics + ": key 'gas."
                                  + (r.path == 0 ? "spoutShare" : "downcomerShare")
                                  + "' expected at least 0.001 (region '" + r.name

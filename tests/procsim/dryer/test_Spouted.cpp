@@ -282,3 +282,47 @@ TEST(Spouted, AnInitialStateOutOfRangeStopsWithOneLine)
         EXPECT_EQ(m.find('\n'), std::string::npos);
     }
 }
+
+namespace
+{
+
+// The gas each region's kernels saw over a short batch in which only the
+// kernels of region `exchanging` take heat and water (h, k_m zero elsewhere).
+Result onlyOneRegionExchanges(const std::string& exchanging, Case& c)
+{
+    c = shortBatch(2000, 1);
+    for (Region& r : c.regions)
+        if (r.name != exchanging) r.h = r.km = 0;
+    return run(c);
+}
+
+double gasTemperatureOf(const Case& c, const Result& r, const std::string& name)
+{
+    for (std::size_t k = 0; k < c.regions.size(); ++k)
+        if (c.regions[k].name == name) return r.gasT[k] - 273.15;
+    ADD_FAILURE() << "no region " << name;
+    return 0;
+}
+
+} // namespace
+
+TEST(Spouted, AllTheGasCrossesTheEntrainmentZoneThenSplits)
+{
+    // the jet enters at the base: what the entrainment zone's kernels take
+    // from it, every region downstream sees; what the downcomer's take, only
+    // the downcomer (the seepage leaves by the outlet, not through the spout)
+    Case c;
+    const Result base = onlyOneRegionExchanges("entrainment", c);
+    const double entrained = gasTemperatureOf(c, base, "entrainment");
+    EXPECT_LT(entrained, c.inletC - 1); // the zone's kernels cooled it
+    for (const char* name : {"spout", "fountain", "downcomer"})
+        EXPECT_NEAR(gasTemperatureOf(c, base, name), entrained, 1e-9) << name;
+    const Result seep = onlyOneRegionExchanges("downcomer", c);
+    EXPECT_LT(gasTemperatureOf(c, seep, "downcomer"), c.inletC - 1);
+    for (const char* name : {"entrainment", "spout", "fountain"})
+        EXPECT_NEAR(gasTemperatureOf(c, seep, name), c.inletC, 1e-9) << name;
+    const Result spout = onlyOneRegionExchanges("spout", c);
+    EXPECT_NEAR(gasTemperatureOf(c, spout, "fountain"), gasTemperatureOf(c, spout, "spout"), 1e-9);
+    EXPECT_LT(gasTemperatureOf(c, spout, "spout"), c.inletC - 1);
+    EXPECT_NEAR(gasTemperatureOf(c, spout, "downcomer"), c.inletC, 1e-9);
+}
