@@ -579,6 +579,14 @@ def drytime_section(case):
                                    for k in ('spout', 'fountain', 'downcomer', 'entrainment'))
                          + '; unlimited air %.2f x the direct rate'
                          % (c['rate_unlimited_air'] / c['rate_direct']), '', settings, wall))
+        if 'rate_region_means' in c:
+            rows.append(("free-water rate from the CFD-DEM's region means (holdup, k_m, gas and "
+                         'kernel state), against the direct rate',
+                         '%.4g / %.4g kg/kg d.b. per s: %+.1f %%'
+                         % (c['rate_region_means'], c['rate_direct'],
+                            100 * (c['rate_region_means'] / c['rate_direct'] - 1)),
+                         "close to 0: the predictor's departure is then its compartments' gas",
+                         settings, wall))
         keys += [('drytime.consistency_rate_rel', '%.3g' % c['rate_rel'], '', '0',
                   'predictor / direct - 1 of the bed-mean drying rate; direct %.4g kg/kg/s; '
                   % c['rate_direct'] + settings),
