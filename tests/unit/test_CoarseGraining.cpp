@@ -12,7 +12,9 @@
 // law would show it.
 
 #include "CartesianMesh.hpp"
+#include "CoarseGraining.hpp"
 #include "HeatExchange.hpp"
+#include "InputError.hpp"
 #include "ModelFamilies.hpp"
 #include "MoistureExchange.hpp"
 #include "MomentumExchange.hpp"
@@ -278,4 +280,57 @@ TEST(CoarseGraining, EveryLawDependsOnTheDiameter)
         const double atParcel = model->rate({2.0 * d, 2e-4, 310.0}, 0.3, state.data(), gas, 0.05);
         EXPECT_NE(atD, atParcel) << name;
     }
+}
+
+// --- the refusals: one line naming the file and the key ------------------------------
+
+namespace
+{
+
+std::string refusal(void (*check)())
+{
+    try
+    {
+        check();
+    }
+    catch (const InputError& e)
+    {
+        return e.what();
+    }
+    return "";
+}
+
+} // namespace
+
+TEST(CoarseGraining, FactorBelowOneOrNotFiniteIsRefused)
+{
+    const std::string file = "constant/couplingProperties";
+    EXPECT_EQ(checkedCoarseGraining(1.0, "1", file), 1.0);
+    EXPECT_EQ(checkedCoarseGraining(2.5, "2.5", file), 2.5);
+    EXPECT_EQ(refusal([] { checkedCoarseGraining(0.5, "0.5", "constant/couplingProperties"); }),
+              "constant/couplingProperties: key 'coarseGraining' expected a factor >= 1 (parcel diameter / "
+              "original particle diameter), got '0.5'");
+    for (const double bad : {0.0, -2.0, std::nan(""), HUGE_VAL})
+    {
+        EXPECT_THROW(checkedCoarseGraining(bad, "x", file), InputError) << bad;
+    }
+    EXPECT_NE(refusal([] {
+                  checkedCoarseGraining(std::nan(""), "two", "constant/couplingProperties");
+              }).find("got 'two'"),
+              std::string::npos);
+}
+
+TEST(CoarseGraining, InputThatNeverScalesByCgIsRefusedUnlessCgIsOne)
+{
+    const std::string file = "constant/couplingProperties";
+    EXPECT_NO_THROW(checkCoarseGrainedInput(1.0, false, file, "in.coupled"));
+    EXPECT_NO_THROW(checkCoarseGrainedInput(2.0, true, file, "in.coupled"));
+    EXPECT_EQ(
+        refusal([] { checkCoarseGrainedInput(2.0, false, "constant/couplingProperties", "in.coupled"); }),
+        "constant/couplingProperties: key 'coarseGraining' is not 1, but LIGGGHTS input 'in.coupled' never "
+        "uses ${cg}: expected it to scale its particles by it (liggghts_inputs/README.md)");
+    EXPECT_NO_THROW(checkNoOwnCg(false, file));
+    EXPECT_EQ(refusal([] { checkNoOwnCg(true, "constant/couplingProperties"); }),
+              "constant/couplingProperties: key 'liggghtsVariables/cg' expected nothing (spoutFoam passes "
+              "LIGGGHTS cg from 'coarseGraining')");
 }
