@@ -334,3 +334,114 @@ TEST(CoarseGraining, InputThatNeverScalesByCgIsRefusedUnlessCgIsOne)
               "constant/couplingProperties: key 'liggghtsVariables/cg' expected nothing (spoutFoam passes "
               "LIGGGHTS cg from 'coarseGraining')");
 }
+
+// --- issue 27 item 2, the cheapest check: one parcel alone behaves as one particle -----
+
+namespace
+{
+
+// One parcel of factor cg (radius cg r) alone at the centre of a 60 mm cell.
+std::vector<Particle> aloneAt(double cg, double temperature)
+{
+    Particle p;
+    p.id = 1;
+    p.x = Vec3{0.03, 0.03, 0.03};
+    p.v = v;
+    p.radius = cg * radius;
+    p.coarseGraining = cg;
+    p.temperature = temperature;
+    return {p};
+}
+
+CartesianMesh bigCell()
+{
+    return CartesianMesh({0.0, 0.06}, {0.0, 0.06}, {0.0, 0.06});
+}
+
+} // namespace
+
+// Lumped heating in gas at 400 K: the parcel's temperature, stepped with the
+// heat it receives over its own heat capacity (LIGGGHTS' m c_p, the parcel's
+// mass), follows the single particle's at cg = 2 and 3, for every
+// heat-transfer model.
+TEST(CoarseGraining, AParcelHeatsAsOneParticle)
+{
+    const CartesianMesh mesh = bigCell();
+    const std::vector<Vec3> centre{{0.03, 0.03, 0.03}}, U{{0.3, 0.1, 2.5}}, gradP{{0.0, 0.0, 0.0}};
+    const std::vector<double> eps{0.9}, Tgas{400.0};
+    const double density = 1231.0, cp = 2400.0, dt = 0.01;
+    for (const std::string& name : HeatTransferModel::registry().names())
+    {
+        const HeatExchange heat(HeatTransferModel::New(name, settings(name)));
+        const MomentumExchange momentum(DragModel::New("Gidaspow", settings("Gidaspow")));
+        std::vector<double> history[3];
+        for (int k = 0; k < 3; ++k)
+        {
+            std::vector<Particle> particles = aloneAt(k + 1.0, 306.0);
+            const VoidFractionResult vf =
+                VoidFractionModel::New("divided", settings("divided"))->compute(mesh, particles);
+            for (int step = 0; step < 200; ++step)
+            {
+                const ExchangeResult ex =
+                    momentum.compute(mesh, particles, vf, GasCellFields{U, gradP, eps}, air, Vec3{});
+                const HeatCellCoefficients c = heat.cellCoefficients(
+                    mesh, particles, vf.map, ex, GasHeatCellFields{centre, U, eps}, hotAir);
+                const double q = heat.particleHeatFlux(particles, vf.map, c, Tgas)[0];
+                particles[0].temperature += q * dt / (density * particles[0].volume() * cp);
+                history[k].push_back(particles[0].temperature);
+            }
+        }
+        ASSERT_GT(history[0].back(), 306.5) << name; // it heats
+        for (int k = 1; k < 3; ++k)
+        {
+            for (std::size_t s = 0; s < history[0].size(); ++s)
+            {
+                EXPECT_NEAR(history[k][s], history[0][s], 1e-12 * history[0][s])
+                    << name << ", cg " << k + 1 << ", step " << s;
+            }
+        }
+    }
+}
+
+// Single-kernel drying at a fixed kernel temperature in air at 350 K: the
+// moisture of a parcel at cg = 2 and 3 follows the particle's over 2 s, and
+// the parcel gives cg^3 times its water, for every drying model.
+TEST(CoarseGraining, AParcelDriesAsOneParticle)
+{
+    const CartesianMesh mesh = bigCell();
+    const std::vector<double> T{350.0}, W{0.01}, km{0.05};
+    const double dryMass = 2.0e-4, dt = 0.01;
+    for (const std::string& name : DryingModel::registry().names())
+    {
+        const MoistureExchange exchange(DryingModel::New(name, settings(name)), pressure);
+        const std::size_t width = static_cast<std::size_t>(exchange.model().stateSize());
+        std::vector<double> moisture[3], water[3];
+        for (int k = 0; k < 3; ++k)
+        {
+            const double cg = k + 1.0;
+            const std::vector<Particle> particles = aloneAt(cg, 320.0);
+            KernelMoisture kernels{{cg * cg * cg * dryMass}, {0.3}, std::vector<double>(width, 0.0), {}};
+            exchange.initialise(kernels, 0);
+            const VoidFractionResult vf =
+                VoidFractionModel::New("divided", settings("divided"))->compute(mesh, particles);
+            for (int step = 0; step < 200; ++step)
+            {
+                const MoistureStep s =
+                    exchange.advance(mesh, particles, vf.map, MoistureCellFields{T, W, km}, kernels, dt);
+                moisture[k].push_back(kernels.moisture[0]);
+                water[k].push_back(s.waterLost[0] / (cg * cg * cg));
+            }
+        }
+        ASSERT_LT(moisture[0].back(), 0.299) << name; // it dries
+        for (int k = 1; k < 3; ++k)
+        {
+            for (std::size_t s = 0; s < moisture[0].size(); ++s)
+            {
+                EXPECT_NEAR(moisture[k][s], moisture[0][s], 1e-12 * moisture[0][s])
+                    << name << ", cg " << k + 1 << ", step " << s;
+                EXPECT_NEAR(water[k][s], water[0][s], 1e-11 * std::fabs(water[0][s]))
+                    << name << ", cg " << k + 1 << ", step " << s;
+            }
+        }
+    }
+}
