@@ -13,6 +13,10 @@
 // Summed over particles this is sum_c V_c (K_c T_c - S_c): the heat the
 // particles receive is the heat the gas equation gave, to round-off.
 // A lost particle (empty map row) exchanges nothing.
+// A coarse-grained parcel (Particle.hpp): A_i is its cg^3 originals' surface
+// and d_c (MomentumExchange) their diameter, so h is an original's and q_i
+// cg^3 times an original's heat; the parcel's mass is cg^3 originals', so its
+// temperature moves as each original's.
 
 #include "CellLocator.hpp"
 #include "HeatTransferModel.hpp"

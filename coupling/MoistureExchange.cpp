@@ -74,7 +74,10 @@ MoistureStep MoistureExchange::advance(const CellLocator& mesh, const std::vecto
             if (i + ahead < n) look(i + ahead);
         }
         if (map.cells(i).size() == 0) continue;
-        const Kernel kernel{2.0 * particles[i].radius, kernels.dryMass[i], particles[i].temperature};
+        // a parcel: one of its originals dries, the parcel loses cg^3 times its water
+        const Particle& p = particles[i];
+        const double originals = p.multiplicity();
+        const Kernel kernel{p.diameter(), kernels.dryMass[i] / originals, p.temperature};
         double* state = kernels.stateOf(i, width);
         const bool gasUsed = rows ? gasNeeded[i] != 0 : (width == 0 || model_->needsGas(state));
         double Tg = kernel.temperature, W = 0.0, km = 0.0;
@@ -89,8 +92,9 @@ MoistureStep MoistureExchange::advance(const CellLocator& mesh, const std::vecto
             }
         }
         const MoistAir air{Tg, W, pressure_};
-        const double dW =
-            model_->advanceWithLatentHeat(kernel, kernels.moisture[i], state, air, km, dt, out.latentHeat[i]);
+        const double dW = originals
+                          * model_->advanceWithLatentHeat(kernel, kernels.moisture[i], state, air, km, dt,
+                                                          out.latentHeat[i]);
         out.waterLost[i] = dW;
         for (const CellWeight& cw : map.cells(i))
         {

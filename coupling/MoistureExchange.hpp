@@ -15,6 +15,9 @@
 // particle's temperature, c_pv of Psychrometrics). Summed over cells, the gas
 // receives exactly the water the particles lose, to round-off. A lost
 // particle (empty map row) neither dries nor gives anything.
+// A coarse-grained parcel (Particle.hpp) dries as one of its originals: the
+// model sees the original's diameter and dry mass m_d/cg^3, and dW_i is cg^3
+// times that original's water; X_i and the state are each original's.
 //
 // The exchange is explicit in the gas: a coupling step's vapour source comes
 // from the particles advanced in the gas state of the step before. In a cell
@@ -37,7 +40,7 @@ namespace spoutlab
 // per particle of the list the exchange is given.
 struct KernelMoisture
 {
-    std::vector<double> dryMass;  // m_d [kg]
+    std::vector<double> dryMass;  // m_d [kg], the parcel's (all its originals')
     std::vector<double> moisture; // X [kg water / kg dry solid]
     std::vector<double> state;    // the model's stateSize() values per particle
     // or, when not empty, where particle i's stateSize() values are kept

@@ -49,12 +49,12 @@ void MomentumExchange::cellAverages(const CellLocator& mesh, const std::vector<P
     // complete() adds the neighbouring ranks' particles in this rank's halo
     const std::size_t nCells = static_cast<std::size_t>(mesh.nCells());
     std::vector<double> sums(5 * nCells, 0.0);
-    const double pi = std::acos(-1.0);
     for (std::size_t n = 0; n < particles.size(); ++n)
     {
         const Particle& p = particles[n];
         const double volume = p.volume();
-        const double surface = 4.0 * pi * p.radius * p.radius;
+        // a parcel's originals' surface: d_c is the originals' diameter
+        const double surface = p.surface();
         for (const CellWeight& cw : map.cells(n))
         {
             double* cell = &sums[5 * static_cast<std::size_t>(cw.cell)];

@@ -4,7 +4,7 @@
 // Per cell c, from the particle-cell map:
 //   S_c   = sum_i w_ic V_i                 solid volume, phi_c = S_c/V_c (raw)
 //   Us_c  = sum_i w_ic V_i v_i / S_c       volume-weighted particle velocity
-//   d_c   = 6 S_c / sum_i w_ic pi d_i^2    Sauter mean diameter
+//   d_c   = 6 S_c / sum_i w_ic A_i         Sauter mean diameter
 //   beta_c = drag(eps_c, d_c, |u_c - Us_c|), eps_c the (clipped) gas fraction
 // and beta_c, Us_c go into the gas equation as beta (Us - u).
 // Per particle i (centre in cell c0):
@@ -17,6 +17,10 @@
 // sum_i F_i = sum_c beta_c V_c (u_c - Us_c) an identity: the momentum the
 // particles gain is exactly what the gas loses.
 // A lost particle (centre outside the mesh) gets no force at all.
+//
+// Coarse graining (Particle.hpp): V_i is the parcel's volume, A_i its cg^3
+// originals' surface, so d_c is the originals' diameter, the drag law sees
+// their Re and F_i is cg^3 times one original's force; no law needs to know.
 
 #include "CellLocator.hpp"
 #include "DragModel.hpp"

@@ -37,6 +37,18 @@ def insertion_seed(text, path):
     return seed
 
 
+def coarse_graining(text, path):
+    """The coarse-graining factor cg >= 1 (a DEM particle a parcel of cg^3)."""
+    try:
+        cg = float(text)
+    except ValueError:
+        cg = math.nan
+    if not (math.isfinite(cg) and cg >= 1):
+        sys.exit('generate: %s: key \'coarseGraining\' expected a factor >= 1 (parcel '
+                 'diameter / particle diameter), got %r' % (path, text))
+    return cg
+
+
 class Geometry:
     """The vessel in mm, from the dictionary."""
 
@@ -63,6 +75,7 @@ class Geometry:
         self.dz = number('cellHeight') / self.refine
         self.particles = {k: number(k) for k in
                           ('nParticles', 'dp', 'rhop', 'kn', 'e', 'mu', 'nu', 'dtDem')}
+        self.coarseGraining = coarse_graining(d.get('coarseGraining', '1'), path)
         self.seed = insertion_seed(d.get('insertionSeed', '49979687'), path)
         self.tan = math.tan(math.radians(self.theta))
         self.nx = round(self.W / self.dx)

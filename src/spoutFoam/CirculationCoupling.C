@@ -387,10 +387,12 @@ CirculationRun CirculationCoupling::runFacts
     const ThermalCoupling* thermal
 ) const
 {
-    double sums[3] = {double(particles.size()), 0, 0};   // n, sum d, sum V
+    // n, sum d, sum V: the diameter is an original particle's, the count
+    // and the mass (what the statistics' counts weigh) the DEM particles'
+    double sums[3] = {double(particles.size()), 0, 0};
     for (const Particle& p : particles)
     {
-        sums[1] += 2*p.radius;
+        sums[1] += p.diameter();
         sums[2] += p.volume();
     }
     const std::vector<double>* dry = thermal ? thermal->dryMass() : nullptr;

@@ -5,9 +5,11 @@
 
 #include "OStringStream.H"
 
+#include "CoarseGraining.hpp"
 #include "InputError.hpp"
 
 #include <cmath>
+#include <limits>
 
 namespace spoutlab
 {
@@ -72,6 +74,22 @@ double positiveEntry
         file + ": key '" + key + "' expected " + what
       + (e ? ", got '" + got + "'" : " (missing; " + needed + " needs it)")
     );
+}
+
+
+double coarseGrainingEntry(const Foam::dictionary& dict, const std::string& file)
+{
+    const Foam::entry* e = dict.findEntry("coarseGraining", Foam::keyType::LITERAL);
+    if (!e) return 1;
+    double value = std::numeric_limits<double>::quiet_NaN();
+    Foam::OStringStream os;
+    if (!e->isDict())
+    {
+        Foam::ITstream& is = e->stream();
+        if (is.size() == 1 && is[0].isNumber()) value = is[0].number();
+        forAll(is, i) os << (i ? " " : "") << is[i];
+    }
+    return checkedCoarseGraining(value, e->isDict() ? "a dictionary" : os.str(), file);
 }
 
 } // namespace spoutlab

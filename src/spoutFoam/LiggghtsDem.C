@@ -420,6 +420,7 @@ void LiggghtsDem::localParticles(std::vector<Particle>& particles)
         p.v = Vec3{atom->v[i][0], atom->v[i][1], atom->v[i][2]};
         p.radius = atom->radius[i];
         p.temperature = T ? T[i] : 0.0;
+        p.coarseGraining = coarseGraining_;
         localIds_[k] = p.id;
     }
 }
@@ -624,7 +625,8 @@ double LiggghtsDem::minHeatCapacityPerArea() const
     {
         const double r = atom->radius[i];
         const double c = atom->rmass[i]*heatCapacity_[atom->type[i] - 1];
-        cMin = std::min(cMin, c/(4*pi*r*r));
+        // a parcel exchanges through its originals' surface, cg times its own
+        cMin = std::min(cMin, c/(4*pi*r*r*coarseGraining_));
     }
     MPI_Allreduce(MPI_IN_PLACE, &cMin, 1, MPI_DOUBLE, MPI_MIN, comm_);
     return cMin;

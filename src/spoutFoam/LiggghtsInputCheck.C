@@ -5,6 +5,7 @@
 
 #include "InputError.hpp"
 
+#include <cctype>
 #include <fstream>
 #include <sstream>
 #include <vector>
@@ -32,6 +33,31 @@ public:
     :
         input_(input), given_(variables), vars_(variables)
     {}
+
+    //- Whether a command of the scripts (includes followed) refers to the
+    //  variable name, as ${name} or v_name; valid after check().
+    bool uses(const std::string& name) const
+    {
+        for (const std::string& text : commands_)
+        {
+            if (text.find("${" + name + "}") != std::string::npos) return true;
+            for
+            (
+                std::size_t at = text.find("v_" + name);
+                at != std::string::npos;
+                at = text.find("v_" + name, at + 1)
+            )
+            {
+                const std::size_t end = at + 2 + name.size();
+                const bool wordStart =
+                    at == 0 || !(std::isalnum(text[at - 1]) || text[at - 1] == '_');
+                const bool wordEnd =
+                    end == text.size() || !(std::isalnum(text[end]) || text[end] == '_');
+                if (wordStart && wordEnd) return true;
+            }
+        }
+        return false;
+    }
 
     void check(const std::string& script, int depth = 0)
     {
@@ -61,6 +87,7 @@ private:
     std::string input_;
     std::map<std::string, std::string> given_;   // -var: never redefined
     std::map<std::string, std::string> vars_;
+    std::vector<std::string> commands_;   // as written, without comments
 
     static std::string withoutComment(const std::string& line)
     {
@@ -131,7 +158,8 @@ private:
         const std::string& script, int lineNo, const std::string& raw, int depth
     )
     {
-        const std::vector<std::string> w = words(expand(withoutComment(raw)));
+        commands_.push_back(withoutComment(raw));
+        const std::vector<std::string> w = words(expand(commands_.back()));
         if (w.size() >= 4 && w[0] == "variable")
         {
             // LIGGGHTS skips an index variable that exists (e.g. from -var)
@@ -172,6 +200,19 @@ void checkIncludes
 )
 {
     IncludeCheck(inputFile, variables).check(inputFile);
+}
+
+
+bool usesVariable
+(
+    const std::string& inputFile,
+    const std::map<std::string, std::string>& variables,
+    const std::string& name
+)
+{
+    IncludeCheck scripts(inputFile, variables);
+    scripts.check(inputFile);
+    return scripts.uses(name);
 }
 
 } // namespace spoutlab

@@ -3,9 +3,12 @@
 \*---------------------------------------------------------------------------*/
 #include "LiggghtsStart.H"
 
+#include "CoarseGraining.hpp"
 #include "FoamParameters.H"
 #include "InputError.hpp"
+#include "LiggghtsInputCheck.H"
 
+#include <cstdio>
 #include <map>
 
 namespace spoutlab
@@ -26,9 +29,18 @@ std::map<std::string, std::string> liggghtsVariables
     vars["dem"] = demDir;
     if (const Foam::dictionary* user = couplingDict.findDict("liggghtsVariables"))
     {
+        checkNoOwnCg(user->found("cg"), "constant/couplingProperties");
         Parameters params = toParameters(couplingDict, "liggghtsVariables");
         for (const Foam::word& key : user->toc()) vars[key] = params.getWord(key);
     }
+    // the coarse-graining factor, for the input to scale its parcels by
+    char cg[32];
+    std::snprintf
+    (
+        cg, sizeof cg, "%.17g",
+        coarseGrainingEntry(couplingDict, "constant/couplingProperties")
+    );
+    vars["cg"] = cg;
     if (runTime.value() > 0)
     {
         const Foam::fileName restart =
@@ -67,7 +79,15 @@ std::unique_ptr<LiggghtsDem> startLiggghts
     if (!input.isAbsolute()) input = caseDir/input;
     vars["inputDir"] = input.path();   // for includes beside the input
     inputFile = input;
-    return std::unique_ptr<LiggghtsDem>
+    const double cg = coarseGrainingEntry(couplingDict, "constant/couplingProperties");
+    if (Foam::isFile(input))   // else LiggghtsDem names the missing input
+    {
+        checkCoarseGrainedInput
+        (
+            cg, usesVariable(input, vars, "cg"), "constant/couplingProperties", input
+        );
+    }
+    std::unique_ptr<LiggghtsDem> dem
     (
         new LiggghtsDem
         (
@@ -75,6 +95,8 @@ std::unique_ptr<LiggghtsDem> startLiggghts
             circulationTrack
         )
     );
+    dem->setCoarseGraining(cg);
+    return dem;
 }
 
 } // namespace spoutlab

@@ -149,6 +149,21 @@ class InsertionSeed(unittest.TestCase):
                           str(stop.exception.code))
 
 
+class CoarseGraining(unittest.TestCase):
+    """The coarse-graining factor: 1 (the dictionary's), or any cg >= 1."""
+
+    def test_factors_of_one_and_above_are_taken(self):
+        for text, cg in (('1', 1.0), ('2', 2.0), ('2.5', 2.5)):
+            self.assertEqual(spoutedbed.coarse_graining(text, 'dict'), cg)
+
+    def test_others_stop_naming_the_key(self):
+        for text in ('0.5', '0', '-2', 'nan', 'inf', 'two'):
+            with self.assertRaises(SystemExit) as stop:
+                spoutedbed.coarse_graining(text, 'system/spoutedBedDict')
+            self.assertIn("system/spoutedBedDict: key 'coarseGraining' expected a factor >= 1",
+                          str(stop.exception.code))
+
+
 class VesselVolume(unittest.TestCase):
     """The vessel below a height, for the settled bed's voidage: the slanted
     part is a trapezoid, the rest a rectangle, less the plates."""
