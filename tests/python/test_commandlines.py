@@ -149,9 +149,10 @@ class Defaults(unittest.TestCase):
                          (2.0, 20.0, 18.0, 1.0, 'statistics', 0.05))
         _, a = results.parse(['ums', 'circ', '--heat', 'h', '--noplates', 'a',
                               '--noplates', 'b', '-o', 'out.md', '--mixing', 'm', '--drying', 'd',
-                              '--dryingTime', 't'])
+                              '--dryingTime', 't', '--coarse', 'c2'])
         self.assertEqual((a.cases, a.heat, a.noplates, a.maps, a.mixing, a.drying, a.dryingTime,
-                          a.out), (['ums', 'circ'], 'h', ['a', 'b'], None, ['m'], 'd', 't', 'out.md'))
+                          a.coarse, a.out),
+                         (['ums', 'circ'], 'h', ['a', 'b'], None, ['m'], 'd', 't', ['c2'], 'out.md'))
 
     def test_mixing(self):
         a = mixing.parse(['-j', '2', 'e=0.8'])

@@ -7,7 +7,8 @@ no-draft one) are copied to docs/figures/.
 
 Each protocol takes tens of minutes, so the file is in sections -- minimum
 spouting, circulation vs friction, circulation vs velocity, profiles, heat
-transfer, each no-draft-plate bed, velocity maps, mixing -- and a call rewrites the
+transfer, drying, drying time, coarse graining, each no-draft-plate bed,
+velocity maps, mixing -- and a call rewrites the
 sections whose runs it is given and keeps the others (likewise the rows of
 results.csv, by section).
 """
@@ -158,6 +159,44 @@ def ums_rows(case):
         rows.append(r.row('u_ms, draft plates', 'none: the bed did not spout on the '
                           'decreasing branch', '1.25 m/s (sim), 1.12 exp.' + kudra))
     return rows + r.loop_rows() + r.umf_row(), (None if bound else r.u_ms)
+
+
+def coarse_section(case, csv_path):
+    """The draft-plate bed coarse-grained (issue 27): protocols/minimumSpouting
+    in a case copy with coarseGraining = cg, beside the cg = 1 values
+    results.csv holds (its ums section)."""
+    from spoutlab import spoutedbed
+    cg = spoutedbed.load(case).coarseGraining
+    r = UmsRun(case)
+    if cg == 1:
+        sys.exit('results: %s: coarseGraining 1, expected a coarse-grained run (the cg = 1 '
+                 'run is UMS_DIR)' % os.path.join(case, 'constant', 'spoutedBed'))
+    name = 'cg%g' % cg
+    ref = {row['key']: row['value'] for row in csv.DictReader(open(csv_path))} \
+        if os.path.isfile(csv_path) else {}
+    settings = '%s; coarseGraining %g (parcels of %g^3 particles)' % (r.settings, cg, cg)
+    rows, keys = [], []
+    for key, what, value, unit in (
+            ('u_ms_m_s', 'u_ms, draft plates', r.u_ms, 'm/s'),
+            ('dP_ms_kPa', 'dP at u_ms', r.dp_ms / 1000 if r.dp_ms else None, 'kPa')):
+        one = ref.get('draft.' + key, '')
+        if value is None or r.u_ms_bound:
+            rows.append((what + ', cg = %g' % cg, 'none: no spouting step on the decreasing '
+                         'branch' if value is None else 'only bounded', one, settings,
+                         '%.2f h' % r.hours))
+            keys.append(('%s.%s' % (name, key), '', unit, one, 'cg = 1: draft.%s; ' % key
+                         + settings))
+            continue
+        departure = ' (%+.1f %% of cg = 1)' % (100 * (value / float(one) - 1)) if one else ''
+        rows.append((what + ', cg = %g against cg = 1' % cg,
+                     '%.4g %s%s' % (value, unit, departure), 'cg = 1: %s %s' % (one, unit),
+                     settings, '%.2f h' % r.hours))
+        keys.append(('%s.%s' % (name, key), '%.4g' % value, unit, one,
+                     'paper_value: cg = 1 (draft.%s); within 10 %% (issue 27); ' % key + settings))
+    rows.append(('settled bed height, cg = %g' % cg, '%.3f m' % r.bed, '', settings,
+                 '%.2f h' % r.hours))
+    return name, rows + r.loop_rows() + r.branch_rows(), keys, \
+        [('ums.png', 'coarse_%s_pressure_drop.png' % name)]
 
 
 # the no-draft paper's bed heights [m] by particle count
@@ -605,6 +644,7 @@ SECTIONS = [
     ('drying', 'Drying: one kernel, and the bed as a dryer at the section 4.7 conditions'),
     ('drytime', 'Drying time: the circulation statistics the long-time predictor takes from '
                 'the CFD-DEM'),
+    ('coarse', 'Coarse graining: the draft-plate bed in parcels against cg = 1 (issue 27)'),
     ('noplates10k', 'Without draft plates, 10 000 particles (no-draft paper, Fig 2a)'),
     ('noplates26k', 'Without draft plates, 26 000 particles (no-draft paper, Fig 2b)'),
     ('maps', 'Gas and particle velocity without draft plates (no-draft paper, Figs 3-4)'),
@@ -621,6 +661,8 @@ def section_of_key(key):
         return 'drying'
     if key.startswith('drytime.'):
         return 'drytime'
+    if re.match(r'cg[\d.]+\.', key):
+        return 'coarse'
     if key.startswith('mixing'):
         return 'mixing'
     if key.startswith('draft.Ws_He'):
@@ -632,7 +674,7 @@ def section_of_key(key):
 
 FIGURES = {'ums': ('fig2_', 'fig3_'), 'friction': ('fig7_',), 'velocity': ('fig6_',),
            'profiles': ('fig4_5_',), 'heat': ('fig11_', 'fig12_'), 'drying': ('drying_',),
-           'drytime': ('drytime_',),
+           'drytime': ('drytime_',), 'coarse': ('coarse_',),
            'noplates10k': ('noplates10k_',), 'noplates26k': ('noplates26k_',),
            'maps': ('noplates_maps_',), 'mixing': ('mixing_',)}
 
@@ -646,7 +688,7 @@ def remove_figures(section, figure_dir):
 
 
 def build(ums, circ, heat, figure_dir, noplates=(), maps=None, mixing=(), drying=None,
-          drytime=None):
+          drytime=None, coarse=()):
     """section -> (table rows, results.csv rows, figure names) for the runs given."""
     new = {}
 
@@ -709,6 +751,15 @@ def build(ums, circ, heat, figure_dir, noplates=(), maps=None, mixing=(), drying
             sys.exit('results: %s: %s has no section (expected 10 000 or 26 000 particles)'
                      % (os.path.join(case, 'ums.json'), name))
         new[name] = (rows, keys, figures(name, case, pngs))
+    if coarse:
+        # one section from every coarse-grained case copy given
+        remove_figures('coarse', figure_dir)
+        rows, keys, pngs = [], [], []
+        for case in coarse:
+            _, r, k, p = coarse_section(case, os.path.join(os.path.dirname(figure_dir),
+                                                           'results.csv'))
+            rows, keys, pngs = rows + r, keys + k, pngs + copy(case, p, figure_dir)
+        new['coarse'] = (rows, keys, pngs)
     if maps:
         rows, keys, pngs = maps_section(maps)
         new['maps'] = (rows, keys, figures('maps', maps, pngs))
@@ -770,6 +821,9 @@ def parse(argv):
     p.add_argument('--noplates', action='append', default=[], metavar='UMS_DIR',
                    help='a case copy where minimumSpouting --vessel no-plates ran, with '
                         '10 000 or 26 000 particles (repeat for both)')
+    p.add_argument('--coarse', action='append', default=[], metavar='UMS_DIR',
+                   help='a case copy where minimumSpouting ran on the draft-plate bed with '
+                        'coarseGraining > 1 (repeat for several factors)')
     p.add_argument('--maps', metavar='MAPS_DIR',
                    help='a case copy where protocols/velocityMaps ran (maps.txt)')
     p.add_argument('--mixing', action='append', default=[], metavar='MIXING_DIR',
@@ -791,13 +845,14 @@ def main(argv):
     p, a = parse(argv)
     out, cases, heat, noplates, maps, mixing = (a.out, a.cases, a.heat, a.noplates, a.maps,
                                                 a.mixing)
-    if not (cases or heat or noplates or maps or mixing or a.drying or a.dryingTime):
+    if not (cases or heat or noplates or maps or mixing or a.drying or a.dryingTime
+            or a.coarse):
         p.print_help()
         return 2
     ums = cases[0] if cases else None
     circ = cases[1] if len(cases) > 1 else None
     new = build(ums, circ, heat, os.path.join(os.path.dirname(out), 'figures'), noplates, maps,
-                mixing, a.drying, a.dryingTime)
+                mixing, a.drying, a.dryingTime, a.coarse)
     old = old_sections(out)
     lines = ['# SpoutLab vs the source papers', '',
              'Written by `openfoam_cases/spoutDraftPlates/protocols/results` from the protocol',
