@@ -43,6 +43,21 @@ def void_fraction_model(path='constant/couplingProperties'):
     return name
 
 
+def coarse_graining(path='constant/couplingProperties'):
+    """The case's coarseGraining cg (default 1): each DEM particle, whose
+    radius the particle files hold, is a parcel of cg^3 particles of
+    diameter 2 r / cg."""
+    text = foamfile.entry(path, 'coarseGraining', '1')
+    try:
+        cg = float(text)
+    except (TypeError, ValueError):
+        cg = 0.0
+    if not cg >= 1:
+        raise SystemExit("%s: key 'coarseGraining' expected a factor >= 1, got '%s'"
+                         % (path, text))
+    return cg
+
+
 class Column:
     """The horizontal layers of cells of a column mesh, from the cell centres
     and volumes postProcess wrote into 0/C and 0/V (writeCellCentres,
