@@ -156,9 +156,9 @@ void readStatistics(const std::string& file, Case& c, const CaseGeometry& g, con
         r.voidage = k.within("voidage", 1e-3, 1);
         r.hFile = k.within("h", 0, 1e6, "W/m2/K");
         r.kmFile = k.within("km", 0, 1e3, "m/s");
-        for (const char* key : {"h", "km"})
-            if (c.measuredTransfer && !(k.within(key, 0, 1e6) > 0))
-                throw k.error(key, "a measured value above 0 (the case's transfer_coefficients: measured)");
+        if (c.measuredTransfer && !(r.hFile > 0 && r.kmFile > 0))
+            throw k.error(r.hFile > 0 ? "km" : "h",
+                          "a measured value above 0 (the case's transfer_coefficients: measured)");
         r.gasTemperatureFile = k.within("Tgas", 0, 2000, "K");
         r.gasHumidityFile = k.within("humidityRatio", -1, 0, 1);
         r.holdupShare = k.within("holdup", 0, particles) / particles;
