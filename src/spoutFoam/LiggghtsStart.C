@@ -20,7 +20,8 @@ namespace
 std::map<std::string, std::string> liggghtsVariables
 (
     const Foam::Time& runTime,
-    const Foam::dictionary& couplingDict
+    const Foam::dictionary& couplingDict,
+    double coarseGraining
 )
 {
     const Foam::fileName demDir = runTime.globalPath()/"DEM";
@@ -35,11 +36,7 @@ std::map<std::string, std::string> liggghtsVariables
     }
     // the coarse-graining factor, for the input to scale its parcels by
     char cg[32];
-    std::snprintf
-    (
-        cg, sizeof cg, "%.17g",
-        coarseGrainingEntry(couplingDict, "constant/couplingProperties")
-    );
+    std::snprintf(cg, sizeof cg, "%.17g", coarseGraining);
     vars["cg"] = cg;
     if (runTime.value() > 0)
     {
@@ -72,14 +69,14 @@ std::unique_ptr<LiggghtsDem> startLiggghts
 {
     const Foam::fileName caseDir = runTime.globalPath();
     if (Foam::Pstream::master()) Foam::mkDir(caseDir/"DEM");
-    std::map<std::string, std::string> vars = liggghtsVariables(runTime, couplingDict);
+    const double cg = coarseGrainingEntry(couplingDict, "constant/couplingProperties");
+    std::map<std::string, std::string> vars = liggghtsVariables(runTime, couplingDict, cg);
 
     Foam::fileName input = couplingDict.get<Foam::fileName>("liggghtsInput");
     input.expand();
     if (!input.isAbsolute()) input = caseDir/input;
     vars["inputDir"] = input.path();   // for includes beside the input
     inputFile = input;
-    const double cg = coarseGrainingEntry(couplingDict, "constant/couplingProperties");
     if (Foam::isFile(input))   // else LiggghtsDem names the missing input
     {
         checkCoarseGrainedInput
