@@ -127,6 +127,9 @@ void CirculationStatistics::observe(double t, const Vec3& x, double* track, cons
     const double values[nSampleQuantities] = {seen.voidage, seen.slipRe, seen.h,        seen.km,
                                               seen.Tgas,    seen.Y,      seen.Tparticle};
     for (int q = 0; q < nSampleQuantities; ++q) seen_[s][std::size_t(q)] += values[q];
+    if (state != entrainmentRegion || !regions_.inJet(x.x, x.z)) return;
+    jetOccupancy_ += 1;
+    for (int q = 0; q < nSampleQuantities; ++q) jetSeen_[std::size_t(q)] += values[q];
 }
 
 void CirculationStatistics::endSample(double t)
@@ -145,6 +148,16 @@ double CirculationStatistics::meanSeen(int state, int quantity) const
     return n > 0 ? seen_[std::size_t(state)][std::size_t(quantity)] / n : 0.0;
 }
 
+double CirculationStatistics::jetHoldup() const
+{
+    return sampleTimes_ > 0 ? jetOccupancy_ / sampleTimes_ : 0.0;
+}
+
+double CirculationStatistics::meanSeenInJet(int quantity) const
+{
+    return jetOccupancy_ > 0 ? jetSeen_[std::size_t(quantity)] / jetOccupancy_ : 0.0;
+}
+
 std::array<double, nCirculationRegions> CirculationStatistics::openAtEnd(const std::vector<double*>& tracks,
                                                                          double tLast, double dt)
 {
@@ -158,7 +171,8 @@ std::array<double, nCirculationRegions> CirculationStatistics::openAtEnd(const s
     return open;
 }
 
-// Layout: sampleTimes, skipped, entries[4], occupancy[4], openStart[4], seen[4][7], per
+// Layout: sampleTimes, skipped, entries[4], occupancy[4], openStart[4], seen[4][7],
+// jetOccupancy, jetSeen[7], per
 // distribution (5) the moments all, first, second (3 each), then the number
 // of bins n and the 5 histograms of n bins each.
 std::size_t CirculationStatistics::bins() const
@@ -175,6 +189,8 @@ std::vector<double> CirculationStatistics::pack(std::size_t minBins, bool counts
     p.insert(p.end(), occupancy_.begin(), occupancy_.end());
     p.insert(p.end(), openStart_.begin(), openStart_.end());
     for (const auto& row : seen_) p.insert(p.end(), row.begin(), row.end());
+    p.push_back(jetOccupancy_);
+    p.insert(p.end(), jetSeen_.begin(), jetSeen_.end());
     const std::size_t bins = std::max(minBins, this->bins());
     for (const ResidenceDistribution& d : residence_)
     {
@@ -194,8 +210,9 @@ std::vector<double> CirculationStatistics::pack(std::size_t minBins, bool counts
 namespace
 {
 
-constexpr std::size_t fixedPackSize =
-    2 + 3 * nCirculationRegions + nCirculationRegions * nSampleQuantities + (nCirculationRegions + 1) * 9;
+constexpr std::size_t fixedPackSize = 2 + 3 * nCirculationRegions
+                                      + (nCirculationRegions + 1) * nSampleQuantities + 1
+                                      + (nCirculationRegions + 1) * 9;
 
 } // namespace
 
@@ -221,6 +238,8 @@ void CirculationStatistics::add(const std::vector<double>& packed)
     {
         for (double& v : row) v += packed[k++];
     }
+    jetOccupancy_ += packed[k++];
+    for (double& v : jetSeen_) v += packed[k++];
     for (ResidenceDistribution& d : residence_)
     {
         for (Moments* m : {&d.all, &d.halves[0], &d.halves[1]})
@@ -245,6 +264,8 @@ void CirculationStatistics::clear()
     occupancy_ = {};
     openStart_ = {};
     seen_ = {};
+    jetOccupancy_ = 0;
+    jetSeen_ = {};
     sampleTimes_ = 0;
     skipped_ = 0;
 }

@@ -9,7 +9,10 @@
 //   downcomer    |x| >= Wd/2 + plateThickness, He <= z < Hd
 //   entrainment  z < He (at any x)
 // and none inside a plate (Wd/2 < |x| < Wd/2 + plateThickness, He <= z < Hd),
-// where no particle can be.
+// where no particle can be. The jet is the part of the entrainment zone under
+// the spout, |x| <= Wd/2 and z < He: the inlet gas rises through it hot and
+// dry, while beside it the kernels sliding off the downcomers meet the little
+// gas that seeps towards them (the gas's compartments, not a particle state).
 //
 // A particle's state advances only in the cycle order
 //   spout -> fountain -> downcomer -> entrainment -> spout:
@@ -50,6 +53,7 @@
 #include "Vec3.hpp"
 
 #include <array>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -78,6 +82,7 @@ public:
                       const std::string& context = "draft-plate regions");
 
     int region(double x, double z) const;
+    bool inJet(double x, double z) const { return z < He_ && std::fabs(x) <= 0.5 * Wd_; }
 
     double Wd() const { return Wd_; }
     double He() const { return He_; }
@@ -148,6 +153,9 @@ public:
     // mean of a ParticleSample quantity (0..nSampleQuantities-1, in the
     // struct's order) over the samples in the state; 0 without samples
     double meanSeen(int state, int quantity) const;
+    // the same over the samples of the entrainment state found in the jet
+    double jetHoldup() const;
+    double meanSeenInJet(int quantity) const;
     // samples of particles found in the region two steps ahead of their state
     // (a skipped region: the sampling was too coarse), over all states
     double skippedSamples() const { return skipped_; }
@@ -177,6 +185,8 @@ private:
     std::array<double, nCirculationRegions> occupancy_{}; // particle samples per state
     std::array<double, nCirculationRegions> openStart_{};
     std::array<std::array<double, nSampleQuantities>, nCirculationRegions> seen_{};
+    double jetOccupancy_ = 0;
+    std::array<double, nSampleQuantities> jetSeen_{};
     double sampleTimes_ = 0;
     double skipped_ = 0;
 

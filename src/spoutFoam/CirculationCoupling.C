@@ -24,7 +24,8 @@ namespace
 const std::string file = "constant/couplingProperties";
 
 // gas_, maxStep_, firstSample_, lastSample_ after the statistics' own
-constexpr int extraWidth = 6;
+constexpr int nGas = 5;
+constexpr int extraWidth = nGas + 3;
 
 
 double lengthEntry(const Foam::dictionary& dict, const std::string& where, const Foam::word& key)
@@ -240,6 +241,40 @@ void CirculationCoupling::findGasFaces()
         if (ax < 0.5*r.Wd()) spoutFaces_.push_back(f);
         else if (ax > 0.5*r.Wd() + r.plateThickness()) downcomerFaces_.push_back(f);
     }
+    findJetFaces();
+}
+
+
+void CirculationCoupling::findJetFaces()
+{
+    // the vertical faces at |x| = Wd/2 below He, internal or on a processor
+    // patch (there counted by the rank whose cell is in the jet)
+    const DraftPlateRegions& r = stats_.regions();
+    const Foam::vectorField& Cf = mesh_.faceCentres();
+    const Foam::vectorField& Sf = mesh_.faceAreas();
+    const Foam::volVectorField& C = mesh_.C();
+    const auto onSide = [&](Foam::label f)
+    {
+        return std::fabs(Sf[f].x()) >= 0.99*Foam::mag(Sf[f]) && Cf[f].z() < r.He()
+            && std::fabs(std::fabs(Cf[f].x()) - 0.5*r.Wd()) < 1e-6*r.Wd();
+    };
+    for (Foam::label f = 0; f < mesh_.nInternalFaces(); ++f)
+    {
+        if (onSide(f)) jetFaces_.push_back({f, -1, -1});
+    }
+    forAll(mesh_.boundaryMesh(), patchi)
+    {
+        const Foam::polyPatch& pp = mesh_.boundaryMesh()[patchi];
+        if (!pp.coupled()) continue;
+        forAll(pp, i)
+        {
+            const Foam::label cell = pp.faceCells()[i];
+            if (onSide(pp.start() + i) && std::fabs(C[cell].x()) < 0.5*r.Wd())
+            {
+                jetFaces_.push_back({pp.start() + i, patchi, i});
+            }
+        }
+    }
 }
 
 
@@ -256,6 +291,17 @@ void CirculationCoupling::sampleGas()
     gas_[0] += rho_*in;
     gas_[1] += rho_*up[0];
     gas_[2] += rho_*up[1];
+    // out of the jet and into it across its sides, each time's own sign
+    const Foam::volVectorField& C = mesh_.C();
+    const Foam::labelList& owner = mesh_.faceOwner();
+    for (const JetFace& j : jetFaces_)
+    {
+        const double flux = j.patch < 0 ? phi_[j.face] : phi_.boundaryField()[j.patch][j.local];
+        // outward: along the normal when the owner (or the patch's cell) is in the jet
+        const bool ownerInJet = std::fabs(C[owner[j.face]].x()) < 0.5*stats_.regions().Wd();
+        const double out = ownerInJet ? flux : -flux;
+        gas_[out > 0 ? 3 : 4] += rho_*std::fabs(out);
+    }
 }
 
 
@@ -323,7 +369,8 @@ void CirculationCoupling::sample
 std::vector<double> CirculationCoupling::packAll() const
 {
     std::vector<double> all = stats_.pack();
-    all.insert(all.end(), {gas_[0], gas_[1], gas_[2], maxStep_, firstSample_, lastSample_});
+    all.insert(all.end(), gas_, gas_ + nGas);
+    all.insert(all.end(), {maxStep_, firstSample_, lastSample_});
     return all;
 }
 
@@ -340,10 +387,10 @@ void CirculationCoupling::unpackAll(const std::vector<double>& all)
     }
     const std::size_t n = all.size() - extraWidth;
     stats_.unpack(std::vector<double>(all.begin(), all.begin() + n));
-    for (int i = 0; i < 3; ++i) gas_[i] = all[n + i];
-    maxStep_ = all[n + 3];
-    firstSample_ = all[n + 4];
-    lastSample_ = all[n + 5];
+    std::copy(all.begin() + n, all.begin() + n + nGas, gas_);
+    maxStep_ = all[n + nGas];
+    firstSample_ = all[n + nGas + 1];
+    lastSample_ = all[n + nGas + 2];
 }
 
 
@@ -434,7 +481,7 @@ void CirculationCoupling::write
     unsigned long bins = stats_.bins();
     MPI_Allreduce(MPI_IN_PLACE, &bins, 1, MPI_UNSIGNED_LONG, MPI_MAX, MPI_COMM_WORLD);
     std::vector<double> all = stats_.pack(bins, Foam::Pstream::master());
-    all.insert(all.end(), gas_, gas_ + 3);
+    all.insert(all.end(), gas_, gas_ + nGas);
     // the visits open at the last sample (the boundary term of Little's law)
     const std::array<double, nCirculationRegions> open =
         lastSample_ < 0 ? std::array<double, nCirculationRegions>{}
@@ -449,13 +496,13 @@ void CirculationCoupling::write
     if (!Foam::Pstream::master())
     {
         stats_.clear();
-        gas_[0] = gas_[1] = gas_[2] = 0;
+        std::fill(gas_, gas_ + nGas, 0.0);
         return;
     }
     const auto tail = total.end() - nCirculationRegions;
     std::copy(tail, total.end(), openEnd_.begin());
-    stats_.unpack(std::vector<double>(total.begin(), tail - 3));
-    std::copy(tail - 3, tail, gas_);
+    stats_.unpack(std::vector<double>(total.begin(), tail - nGas));
+    std::copy(tail - nGas, tail, gas_);
     if (stateFile)
     {
         const Foam::Time& runTime = mesh_.time();
@@ -517,22 +564,34 @@ std::string CirculationCoupling::conditionsJson() const
 {
     static const char* const names[nSampleQuantities] =
         {"voidage", "slipRe", "h", "km", "Tgas", "Y", "Tparticle"};
+    // holdup and the means of what the particles saw, mean(q) of quantity q
+    const auto seenJson = [](double holdup, const auto& mean)
+    {
+        std::string j = "\"holdup\": " + number(holdup);
+        for (int q = 0; q < nSampleQuantities; ++q)
+        {
+            j += std::string(", \"") + names[q] + "\": " + number(mean(q));
+        }
+        return j + ", \"humidityRatio\": " + number(mean(5)/(1 - mean(5)));
+    };
     const double window = std::max(stats_.sampleTimes(), 1.0)*mesh_.time().deltaTValue();
     std::string j = "\"conditions\": {";
     for (int s = 0; s < nCirculationRegions; ++s)
     {
-        j += std::string(s ? "," : "") + "\n    \"" + circulationRegionName(s) + "\": {\"holdup\": "
-            + number(stats_.holdup(s));
-        for (int q = 0; q < nSampleQuantities; ++q)
-        {
-            j += std::string(", \"") + names[q] + "\": " + number(stats_.meanSeen(s, q));
-        }
-        const double Y = stats_.meanSeen(s, 5);
-        j += ", \"humidityRatio\": " + number(Y/(1 - Y)) + ", \"entries\": "
+        j += std::string(s ? "," : "") + "\n    \"" + circulationRegionName(s) + "\": {"
+            + seenJson(stats_.holdup(s), [&](int q) { return stats_.meanSeen(s, q); })
+            + ", \"entries\": "
             + number(stats_.entries(s)) + ", \"entryRate\": " + number(stats_.entries(s)/window)
             + ", \"occupancy\": " + number(stats_.holdup(s)*window) + ", \"completed\": "
             + number(stats_.residence(s).all.sum) + ", \"openAtStart\": "
-            + number(stats_.openAtStart(s)) + ", \"openAtEnd\": " + number(openEnd_[s]) + "}";
+            + number(stats_.openAtStart(s)) + ", \"openAtEnd\": " + number(openEnd_[s]);
+        if (s == entrainmentRegion)
+        {
+            j += ",\n      \"jet\": {"
+                + seenJson(stats_.jetHoldup(), [&](int q) { return stats_.meanSeenInJet(q); })
+                + "}";
+        }
+        j += "}";
     }
     return j + "}";
 }
@@ -550,7 +609,8 @@ void CirculationCoupling::writeJson(const CirculationRun& run) const
       << residenceJson() << ",\n  " << conditionsJson() << ",\n  \"gas\": {\"inletMassFlow\": "
       << number(in) << ", \"height\": " << number(gasHeight_) << ", \"spoutShare\": "
       << number(share(gas_[1])) << ", \"downcomerShare\": "
-      << number(share(gas_[2])) << "},\n  \"circulationRate\": "
+      << number(share(gas_[2])) << ", \"outOfJet\": " << number(share(gas_[3]))
+      << ", \"intoJet\": " << number(share(gas_[4])) << "},\n  \"circulationRate\": "
       << number(stats_.entries(spoutRegion)/window*run.mass) << "\n}\n";
     const std::string path = mesh_.time().globalPath()/"circulation.json";
     {

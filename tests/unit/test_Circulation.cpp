@@ -297,6 +297,34 @@ TEST(CirculationStatistics, ConditionsPerState)
     EXPECT_EQ(stats.meanSeen(downcomerRegion, 4), 0.0);
 }
 
+// The jet: samples of the entrainment state under the spout (|x| <= Wd/2,
+// z < He), not those beside it, nor a spout particle fallen back into it.
+TEST(CirculationStatistics, JetIsTheEntrainmentStateUnderTheSpout)
+{
+    EXPECT_TRUE(bed.inJet(0.0275, 0.094));
+    EXPECT_FALSE(bed.inJet(0.0276, 0.094));
+    EXPECT_FALSE(bed.inJet(0.0, 0.095));
+    CirculationStatistics stats(bed, 0.0, 100.0, 0.05);
+    std::vector<double> jet = freshTrack(), beside = freshTrack(), fallen = freshTrack();
+    ParticleSample hot;
+    hot.Tgas = 420;
+    ParticleSample cool;
+    cool.Tgas = 350;
+    const Vec3 besideJet{0.1, 0.02, 0.05};
+    stats.observe(0.0, inEntrainment, jet.data(), hot);
+    stats.observe(0.0, besideJet, beside.data(), cool);
+    stats.observe(0.0, inSpout, fallen.data(), cool);
+    stats.endSample(0.0);
+    stats.observe(0.1, inEntrainment, jet.data(), hot);
+    stats.observe(0.1, inEntrainment, beside.data(), hot);  // beside moved into the jet
+    stats.observe(0.1, inEntrainment, fallen.data(), cool); // spout state still
+    stats.endSample(0.1);
+    EXPECT_NEAR(stats.holdup(entrainmentRegion), 2.0, 1e-15);
+    EXPECT_NEAR(stats.jetHoldup(), 1.5, 1e-15);
+    EXPECT_NEAR(stats.meanSeenInJet(4), 420.0, 1e-12);
+    EXPECT_NEAR(stats.meanSeen(entrainmentRegion, 4), (420.0 * 3 + 350) / 4, 1e-12);
+}
+
 // Packed statistics add up over ranks and restore exactly.
 TEST(CirculationStatistics, PackAddUnpack)
 {
@@ -329,6 +357,8 @@ TEST(CirculationStatistics, PackAddUnpack)
         EXPECT_EQ(restored.residence(s).counts.size() >= both.residence(s).counts.size(), true);
     }
     EXPECT_EQ(restored.entries(fountainRegion), both.entries(fountainRegion));
+    EXPECT_GT(both.jetHoldup(), 0.0);
+    EXPECT_EQ(restored.jetHoldup() * restored.sampleTimes(), both.jetHoldup() * both.sampleTimes());
     EXPECT_EQ(restored.pack().size(), two.pack().size());
     EXPECT_THROW(restored.unpack(std::vector<double>(3, 0.0)), std::invalid_argument);
 }

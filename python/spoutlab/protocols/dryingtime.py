@@ -246,7 +246,8 @@ def region_comparison(out, stats, lines):
         head = f.readline().strip().split(',')
         for line in f:
             v = dict(zip(head, line.strip().split(',')))
-            cfd = stats['conditions'][v['region']]
+            cond = stats['conditions']
+            cfd = cond['entrainment']['jet'] if v['region'] == 'jet' else cond[v['region']]
             regions[v['region']] = dict(
                 holdup=(float(v['holdup_share_predicted']), float(v['holdup_share_file'])),
                 km=(float(v['km_m_per_s']), cfd['km']), h=(float(v['h_W_per_m2K']), cfd['h']),

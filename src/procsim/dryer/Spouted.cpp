@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <stdexcept>
 
 #include "CornProperties.hpp"
 #include "MoistAir.hpp"
@@ -65,6 +66,39 @@ double Residence::drawResidual(double u1, double u2, double u3) const
     const double i = binOf(lengthCumulative, u1);
     const double t = binWidth * std::sqrt(i * i + u2 * (2 * i + 1));
     return u3 * t;
+}
+
+void addJet(Case& c, double share, Region jet)
+{
+    const auto named = [&](const std::string& name) {
+        for (std::size_t k = 0; k < c.regions.size(); ++k)
+            if (c.regions[k].name == name) return k;
+        throw std::invalid_argument("addJet: no region " + name);
+    };
+    const std::size_t k = named("entrainment");
+    Region& rest = c.regions[k];
+    jet.name = "jet";
+    jet.correlation = rest.correlation;
+    jet.residence = Residence{};
+    jet.partOf = static_cast<int>(k);
+    jet.share = share;
+    jet.holdupShare = rest.holdupShare * share;
+    jet.measured = rest.measured;
+    jet.path = kShared;
+    jet.gasRank = 0;
+    const auto beside = [share](double zoneMean, double jetMean) {
+        return (zoneMean - share * jetMean) / (1 - share);
+    };
+    rest.slipReynolds = beside(rest.slipReynolds, jet.slipReynolds);
+    rest.voidage = beside(rest.voidage, jet.voidage);
+    rest.hFile = beside(rest.hFile, jet.hFile);
+    rest.kmFile = beside(rest.kmFile, jet.kmFile);
+    rest.jet = static_cast<int>(c.regions.size());
+    // jet -> spout -> fountain; jet -> the rest of the zone -> downcomer -> fountain
+    rest.path = 1;
+    rest.gasRank = 1;
+    c.regions[named("downcomer")].gasRank = 2;
+    c.regions.push_back(jet);
 }
 
 void transferCoefficients(Case& c)
@@ -153,11 +187,13 @@ public:
     std::vector<double> gasTTime, gasWTime; // the compartments' gas times dt
     std::vector<Residence> residence;       // the regions', prepared for drawing
     std::vector<double> occupancy;          // kernels per region at the step's start
+    std::size_t cycle;                      // the regions of the cycle (the first)
 
 private:
     void place(std::size_t i);
     void advance(std::size_t i, double dt, Exchange& ex);
-    void segment(std::size_t i, double tau, Exchange& ex);
+    void visit(std::size_t i, double tau, Exchange& ex);
+    void segment(std::size_t i, std::size_t r, double tau, Exchange& ex);
     GasField gasFor(const Exchange& ex, double dt) const;
     void solveGas();
     GasState solveRegion(std::size_t r, double flow, double W, double h, double kernels, double sumT) const;
@@ -176,6 +212,8 @@ Bed::Bed(const Case& cs) : c(cs)
     above.assign(n, 0.0);
     rng.resize(n);
     state.assign(n * width, 0.0);
+    cycle = static_cast<std::size_t>(
+        std::count_if(c.regions.begin(), c.regions.end(), [](const Region& r) { return r.partOf < 0; }));
     holdupTime.assign(c.regions.size(), 0.0);
     gasTTime.assign(c.regions.size(), 0.0);
     gasWTime.assign(c.regions.size(), 0.0);
@@ -210,11 +248,11 @@ Bed::Bed(const Case& cs) : c(cs)
 void Bed::place(std::size_t i)
 {
     double total = 0;
-    for (const Region& r : c.regions) total += r.residence.histogramMean();
+    for (std::size_t k = 0; k < cycle; ++k) total += c.regions[k].residence.histogramMean();
     const double u = uniform(rng[i]) * total;
     double run = 0;
     std::size_t k = 0;
-    for (; k + 1 < c.regions.size(); ++k)
+    for (; k + 1 < cycle; ++k)
     {
         run += c.regions[k].residence.histogramMean();
         if (u < run) break;
@@ -225,22 +263,40 @@ void Bed::place(std::size_t i)
 }
 
 // The gas along its paths, in the gas's order: all of it crosses the
-// entrainment zone at the base (kShared), then spoutShare rises through spout
-// and fountain (path 0) and the rest seeps through the downcomer (path 1).
+// entrainment zone's first compartment (kShared), then spoutShare rises
+// through the spout (path 0) and the rest seeps through the downcomer (path
+// 1), and the two meet again in the fountain region above the plates
+// (kShared, later in the order), which all the gas leaves the bed through.
 struct GasPaths
 {
     double flow[3], W[3], h[3]; // dry air [kg/s], humidity ratio, enthalpy [J/kg] per path
+    bool split = false;         // a region of path 0 or 1 has been crossed
     GasPaths(const Case& c, double hIn)
         : flow{c.airFlow * c.spoutShare, c.airFlow * (1 - c.spoutShare), c.airFlow},
           W{c.inletW, c.inletW, c.inletW}, h{hIn, hIn, hIn}
     {}
+    // the gas entering a region of path p: a shared region after the split
+    // takes the two paths mixed
+    void entering(int p, double& w, double& enthalpy) const
+    {
+        if (p == kShared && split)
+        {
+            w = (flow[0] * W[0] + flow[1] * W[1]) / (flow[0] + flow[1]);
+            enthalpy = (flow[0] * h[0] + flow[1] * h[1]) / (flow[0] + flow[1]);
+            return;
+        }
+        w = W[p], enthalpy = h[p];
+    }
     // the gas leaving a region of path p enters the next region of p (of both
-    // paths after the shared zone)
+    // paths after a shared region)
     void leave(int p, double w, double enthalpy)
     {
         const int first = p == kShared ? 0 : p, last = p == kShared ? kShared : p;
         for (int q = first; q <= last; ++q) W[q] = w, h[q] = enthalpy;
+        if (p != kShared) split = true;
     }
+    // the gas leaving the bed: the two paths mixed (one after the fountain)
+    void outlet(double& w, double& enthalpy) const { entering(kShared, w, enthalpy); }
     // calls f(region, path) for the regions holding gas, in the gas's order
     template <class F>
     static void walk(const Case& c, const GasPaths& paths, F f)
@@ -263,14 +319,30 @@ GasField Bed::gasFor(const Exchange& ex, double dt) const
     g.outletEnthalpy = hIn;
     if (c.gasAtInlet) return g;
     GasPaths paths(c, hIn);
+    const double recycle = c.airFlow * c.jetRecycle;
     GasPaths::walk(c, paths, [&](std::size_t r, int p) {
-        const double W = paths.W[p] + ex.water[r] / (paths.flow[p] * dt);
-        const double h = paths.h[p] + ex.energy[r] / (paths.flow[p] * dt);
+        double W, h;
+        paths.entering(p, W, h);
+        const Region& reg = c.regions[r];
+        double flow = paths.flow[p];
+        if (reg.partOf >= 0)
+        {
+            // the jet: the share of the rest's water and energy that the
+            // recycle brings back (what it does not, the seepage carries on)
+            const std::size_t rest = static_cast<std::size_t>(reg.partOf);
+            const double back = recycle / (paths.flow[1] + recycle);
+            W += back * ex.water[rest] / (flow * dt);
+            h += back * ex.energy[rest] / (flow * dt);
+        }
+        else if (reg.jet >= 0)
+            flow += recycle; // the rest of the zone: the seepage and the recycle
+        W += ex.water[r] / (flow * dt);
+        h += ex.energy[r] / (flow * dt);
         paths.leave(p, W, h);
         g.region[r] = GasState{psy::temperatureFromEnthalpy(h, W) + kKelvin, W};
     });
-    const double Wout = c.spoutShare * paths.W[0] + (1 - c.spoutShare) * paths.W[1];
-    g.outletEnthalpy = c.spoutShare * paths.h[0] + (1 - c.spoutShare) * paths.h[1];
+    double Wout;
+    paths.outlet(Wout, g.outletEnthalpy);
     g.outlet = GasState{psy::temperatureFromEnthalpy(g.outletEnthalpy, Wout) + kKelvin, Wout};
     return g;
 }
@@ -314,18 +386,54 @@ void Bed::solveGas()
         kernels[static_cast<std::size_t>(region[i])] += weight;
         sumT[static_cast<std::size_t>(region[i])] += weight * T[i];
     }
+    for (std::size_t r = cycle; r < nr; ++r)
+    {
+        // a compartment holds its share of its region's kernels
+        const std::size_t in = static_cast<std::size_t>(c.regions[r].partOf);
+        const double s = c.regions[r].share;
+        kernels[r] = s * kernels[in];
+        sumT[r] = s * sumT[in];
+        kernels[in] -= kernels[r];
+        sumT[in] -= sumT[r];
+    }
     GasPaths paths(c, inletEnthalpy());
+    const double recycle = c.airFlow * c.jetRecycle;
     GasPaths::walk(c, paths, [&](std::size_t r, int p) {
-        seen.region[r] = solveRegion(r, paths.flow[p], paths.W[p], paths.h[p], kernels[r], sumT[r]);
+        double W, h;
+        paths.entering(p, W, h);
+        const Region& reg = c.regions[r];
+        double flow = paths.flow[p];
+        if (reg.partOf >= 0 && recycle > 0)
+        {
+            // the jet: the inlet gas and the recycle of the rest's last gas
+            const GasState& back = seen.region[static_cast<std::size_t>(reg.partOf)];
+            W = (flow * W + recycle * back.W) / (flow + recycle);
+            h = (flow * h + recycle * psy::enthalpy(back.T - kKelvin, back.W)) / (flow + recycle);
+            flow += recycle;
+        }
+        else if (reg.jet >= 0)
+            flow += recycle;
+        seen.region[r] = solveRegion(r, flow, W, h, kernels[r], sumT[r]);
         paths.leave(p, seen.region[r].W, psy::enthalpy(seen.region[r].T - kKelvin, seen.region[r].W));
     });
     occupancy = kernels;
 }
 
-// One kernel over tau in its region: the CFD-DEM coupling step's sequence.
-void Bed::segment(std::size_t i, double tau, Exchange& ex)
+// One kernel over tau in its region: in a region with a jet first the time
+// beside it, then its share in the jet, as the kernels go through the zone.
+void Bed::visit(std::size_t i, double tau, Exchange& ex)
 {
     const std::size_t r = static_cast<std::size_t>(region[i]);
+    const int jet = c.regions[r].jet;
+    if (jet < 0) return segment(i, r, tau, ex);
+    const double inJet = c.regions[static_cast<std::size_t>(jet)].share * tau;
+    segment(i, r, tau - inJet, ex);
+    segment(i, static_cast<std::size_t>(jet), inJet, ex);
+}
+
+// One kernel over tau in gas compartment r: the CFD-DEM coupling step's sequence.
+void Bed::segment(std::size_t i, std::size_t r, double tau, Exchange& ex)
+{
     const Region& reg = c.regions[r];
     const GasState& g = seen.region[r];
     const spoutlab::MoistAir air{g.T, g.W, c.pressure};
@@ -359,12 +467,12 @@ void Bed::advance(std::size_t i, double dt, Exchange& ex)
     while (rest > 0)
     {
         const double tau = std::min(rest, left[i]);
-        if (tau > 0) segment(i, tau, ex);
+        if (tau > 0) visit(i, tau, ex);
         rest -= tau;
         left[i] -= tau;
         if (left[i] <= 0 && c.circulating)
         {
-            const std::size_t next = (static_cast<std::size_t>(region[i]) + 1) % c.regions.size();
+            const std::size_t next = (static_cast<std::size_t>(region[i]) + 1) % cycle;
             region[i] = static_cast<int>(next);
             const double u1 = uniform(rng[i]), u2 = uniform(rng[i]);
             left[i] = residence[next].draw(u1, u2);
@@ -382,6 +490,14 @@ void Bed::step(double dt)
     {
         gasTTime[r] += seen.region[r].T * dt;
         gasWTime[r] += seen.region[r].W * dt;
+    }
+    for (std::size_t r = cycle; r < nr; ++r)
+    {
+        // a region with a compartment: the gas its kernels saw, time-weighted
+        const std::size_t in = static_cast<std::size_t>(c.regions[r].partOf);
+        const double s = c.regions[r].share;
+        gasTTime[in] += s * (seen.region[r].T - seen.region[in].T) * dt;
+        gasWTime[in] += s * (seen.region[r].W - seen.region[in].W) * dt;
     }
     for (std::size_t i = 0; i < X.size(); ++i) advance(i, dt, ex);
     for (std::size_t r = 0; r < nr; ++r)
@@ -493,6 +609,8 @@ void finish(Bed& bed, double heaterJ)
     double total = 0;
     for (const double h : bed.holdupTime) total += h;
     for (const double h : bed.holdupTime) r.holdup.push_back(total > 0 ? h / total : 0.0);
+    for (std::size_t k = bed.cycle; k < r.holdup.size(); ++k)
+        r.holdup[k] = c.regions[k].share * r.holdup[static_cast<std::size_t>(c.regions[k].partOf)];
     for (std::size_t k = 0; k < bed.gasTTime.size(); ++k)
     {
         r.gasT.push_back(bed.t > 0 ? bed.gasTTime[k] / bed.t : bed.seen.region[k].T);

@@ -32,10 +32,12 @@
 // changes: a quasi-steady compartment balance of water and energy along its
 // two paths: all of it crosses the entrainment zone at the base, where the
 // jet meets the kernels that enter the spout, then spoutShare of the dry air
-// rises through spout -> fountain -> freeboard and the rest (downcomerShare)
-// seeps through the downcomer, the two mixed at the outlet. Each region is a
-// well-mixed compartment: the gas the particles there see is the gas leaving
-// it, the gas entering plus what the region's particles gave (water dW,
+// rises through the spout and the rest (downcomerShare) seeps through the
+// downcomer, and the two meet again in the fountain region above the plates,
+// which all the gas leaves through. Where the statistics measure the jet
+// (addJet) the zone is two compartments, the jet and the rest beside it.
+// Each compartment is well mixed: the gas the particles there see is the gas
+// leaving it, the gas entering plus what its particles gave (water dW,
 // energy sum(dW h_v(T_p)) - q tau) over the dry-air flow through it.
 // Explicit like the CFD-DEM's exchange: a step's particles see the
 // compartments computed from the step before; the outlet a step books
@@ -88,7 +90,7 @@ struct Residence
 
 // Region::path of the zone all the gas crosses before it splits into the
 // spout's path (0) and the seepage's (1); the places along the gas's way.
-constexpr int kShared = 2, kGasRanks = 3;
+constexpr int kShared = 2, kGasRanks = 4;
 
 // One region of the bed as the predictor uses it.
 struct Region
@@ -109,6 +111,11 @@ struct Region
     int path = 0;                  // gas path: 0 spout, 1 seepage, kShared both (before the split)
     int gasRank = 0;               // its place in the gas's order (0 first)
     bool measured = false;         // its conditions from the statistics
+    // A gas compartment inside a region of the cycle (the jet, inside the
+    // entrainment zone): partOf its index, share of that region's kernel time
+    // spent in it; the region then names it in `jet`. -1: none.
+    int partOf = -1, jet = -1;
+    double share = 1;
 };
 
 // Gas properties as constant/transportProperties has them.
@@ -137,6 +144,9 @@ struct Case
     double airFlow = 0;    // dry air [kg/s]
     double fanPower = 0;   // [W]
     double spoutShare = 1; // of the dry air; the rest seeps through entrainment and downcomer
+    // of the dry air, what flows back from the rest of the entrainment zone
+    // into the jet (the statistics' gas.intoJet; 0 without a jet)
+    double jetRecycle = 0;
     // the bed
     double bedParticles = 1, diameter = 8e-3, dryMass = 2.5e-4, initialX = 0.3333, initialC = 25;
     double dryHeatCapacity = 1465;
@@ -147,7 +157,8 @@ struct Case
     GasProperties gas{};
     std::shared_ptr<const spoutlab::DryingModel> drying;
     std::string dryingName;
-    std::vector<Region> regions; // the cycle's order; one region: no circulation
+    std::vector<Region>
+        regions; // the cycle's order, then its regions' compartments; one region: no circulation
     bool circulating = true;
     bool gasAtInlet = false; // gasModel inlet: unlimited air
     // transfer_coefficients measured: each region's h and k_m are the
@@ -164,6 +175,19 @@ struct Case
     std::uint64_t seed = 1;
     TimeStepControl step;
 };
+
+// The entrainment zone as two gas compartments: the jet under the spout,
+// which all the gas crosses first and which holds `share` of the zone's
+// kernels (`jet` the means its kernels saw: slipRe, voidage, h, k_m, gas),
+// and the rest of the zone beside it, which only the seepage crosses on its
+// way to the downcomer. The zone's means become the rest's: each is
+// share x the jet's + (1 - share) x the rest's. Its holdup and gas as the
+// statistics give them stay the zone's (the predictor reports the zone's
+// kernels' gas, time-weighted over both). 0 < share < 1; before
+// transferCoefficients. With c.jetRecycle, the jet and the rest exchange gas
+// besides the seepage: the rest takes the seepage and the recycle from the
+// jet and gives the recycle back.
+void addJet(Case& c, double share, Region jet);
 
 // h and k_m of every region: its correlation's (the physics core's) from
 // its slip Re and voidage at the case's gas and kernel diameter, and the

@@ -30,7 +30,7 @@ struct RegionPlace
     int path, rank;
 };
 const std::map<std::string, RegionPlace> kRegions = {
-    {"entrainment", {kShared, 0}}, {"spout", {0, 1}}, {"fountain", {0, 2}}, {"downcomer", {1, 1}}};
+    {"entrainment", {kShared, 0}}, {"spout", {0, 1}}, {"downcomer", {1, 1}}, {"fountain", {kShared, 3}}};
 const char* const kGeometry[] = {"Wd", "He", "Hd", "plateThickness", "width", "depth"};
 
 // a physics-core input error (model settings) as procsim's
@@ -112,6 +112,26 @@ struct CaseGeometry
     double velocity = 0, massFlow = 0;
 };
 
+// The jet under the spout (conditions.entrainment.jet, where the statistics
+// have it, as spoutFoam's do): a gas compartment of the entrainment zone
+// (spouted::addJet).
+void readJet(const YamlInput& cond, Case& c)
+{
+    const YamlInput zone = cond.child("entrainment");
+    if (!zone.has("jet")) return;
+    const YamlInput j = zone.child("jet");
+    const double share = j.within("holdup", 0, zone.number("holdup")) / zone.number("holdup");
+    if (!(share > 0 && share < 1)) return; // all or none of its kernels in the jet: one compartment
+    Region jet;
+    jet.slipReynolds = j.within("slipRe", 0, 1e6);
+    jet.voidage = j.within("voidage", 1e-3, 1);
+    jet.hFile = j.within("h", 0, 1e6, "W/m2/K");
+    jet.kmFile = j.within("km", 0, 1e3, "m/s");
+    jet.gasTemperatureFile = j.within("Tgas", 0, 2000, "K");
+    jet.gasHumidityFile = j.within("humidityRatio", -1, 0, 1);
+    addJet(c, share, jet);
+}
+
 // The statistics: checked against the case, their regions into c.
 void readStatistics(const std::string& file, Case& c, const CaseGeometry& g, const YamlInput& caseRegions)
 {
@@ -165,9 +185,11 @@ void readStatistics(const std::string& file, Case& c, const CaseGeometry& g, con
         r.measured = true;
         c.regions.push_back(r);
     }
+    if (c.circulating) readJet(cond, c);
     const YamlInput gas = s.child("gas");
     c.spoutShare = gas.within("spoutShare", 0, 1);
     const double seep = gas.within("downcomerShare", 0, 1);
+    if (c.regions.back().partOf >= 0 && gas.has("intoJet")) c.jetRecycle = gas.within("intoJet", 0, 10);
     if (std::fabs(c.spoutShare + seep - 1) > 1e-3)
         throw gas.error("downcomerShare",
                         "1 - spoutShare = " + formatNumber(1 - c.spoutShare) + " within 1e-3");
@@ -188,6 +210,7 @@ void readRegions(const YamlInput& in, Case& c, const std::string& still)
         kept[0].path = 0;
         kept[0].gasRank = 0;
         kept[0].residence = Residence{};
+        kept[0].jet = -1;
         c.regions = kept;
         c.spoutShare = 1;
         for (const std::string& k : regs.keys())
@@ -198,6 +221,7 @@ void readRegions(const YamlInput& in, Case& c, const std::string& still)
             if (!kRegions.count(k)) throw regs.error(k, "a region of the statistics");
     for (Region& r : c.regions)
     {
+        if (r.partOf >= 0) continue; // a compartment: its region's correlation, below
         const YamlInput one = regs.child(r.name);
         one.rejectUnknown({"heatTransferModel", "slipRe", "voidage"});
         r.correlation = one.text("heatTransferModel");
@@ -223,6 +247,8 @@ void readRegions(const YamlInput& in, Case& c, const std::string& still)
             measured ? one.within("slipRe", r.slipReynolds, 0, 1e6) : one.within("slipRe", 0, 1e6);
         r.voidage = measured ? one.within("voidage", r.voidage, 1e-3, 1) : one.within("voidage", 1e-3, 1);
     }
+    for (Region& r : c.regions)
+        if (r.partOf >= 0) r.correlation = c.regions[static_cast<std::size_t>(r.partOf)].correlation;
     physics([&] {
         transferCoefficients(c);
         return 0;

@@ -296,33 +296,109 @@ Result onlyOneRegionExchanges(const std::string& exchanging, Case& c)
     return run(c);
 }
 
-double gasTemperatureOf(const Case& c, const Result& r, const std::string& name)
+std::size_t regionOf(const Case& c, const std::string& name)
 {
     for (std::size_t k = 0; k < c.regions.size(); ++k)
-        if (c.regions[k].name == name) return r.gasT[k] - 273.15;
+        if (c.regions[k].name == name) return k;
     ADD_FAILURE() << "no region " << name;
     return 0;
 }
 
+double gasTemperatureOf(const Case& c, const Result& r, const std::string& name)
+{
+    return r.gasT[regionOf(c, name)] - 273.15;
+}
+
 } // namespace
 
-TEST(Spouted, AllTheGasCrossesTheEntrainmentZoneThenSplits)
+TEST(Spouted, AllTheGasCrossesTheEntrainmentZoneSplitsAndMeetsInTheFountain)
 {
     // the jet enters at the base: what the entrainment zone's kernels take
-    // from it, every region downstream sees; what the downcomer's take, only
-    // the downcomer (the seepage leaves by the outlet, not through the spout)
+    // from it, every region downstream sees; what the downcomer's take, the
+    // downcomer and, mixed with the spout's gas, the fountain region above
+    // the plates, through which all the gas leaves
     Case c;
     const Result base = onlyOneRegionExchanges("entrainment", c);
     const double entrained = gasTemperatureOf(c, base, "entrainment");
     EXPECT_LT(entrained, c.inletC - 1); // the zone's kernels cooled it
     for (const char* name : {"spout", "fountain", "downcomer"})
         EXPECT_NEAR(gasTemperatureOf(c, base, name), entrained, 1e-9) << name;
+    const double s = c.spoutShare;
+    ASSERT_GT(s, 0.05);
+    ASSERT_LT(s, 0.95);
+    const auto W = [&](const Result& r, const char* name) { return r.gasW[regionOf(c, name)]; };
     const Result seep = onlyOneRegionExchanges("downcomer", c);
     EXPECT_LT(gasTemperatureOf(c, seep, "downcomer"), c.inletC - 1);
-    for (const char* name : {"entrainment", "spout", "fountain"})
+    for (const char* name : {"entrainment", "spout"})
         EXPECT_NEAR(gasTemperatureOf(c, seep, name), c.inletC, 1e-9) << name;
+    EXPECT_NEAR(W(seep, "fountain"), s * c.inletW + (1 - s) * W(seep, "downcomer"), 1e-12);
     const Result spout = onlyOneRegionExchanges("spout", c);
-    EXPECT_NEAR(gasTemperatureOf(c, spout, "fountain"), gasTemperatureOf(c, spout, "spout"), 1e-9);
     EXPECT_LT(gasTemperatureOf(c, spout, "spout"), c.inletC - 1);
+    EXPECT_NEAR(W(spout, "fountain"), s * W(spout, "spout") + (1 - s) * c.inletW, 1e-12);
     EXPECT_NEAR(gasTemperatureOf(c, spout, "downcomer"), c.inletC, 1e-9);
+}
+
+namespace
+{
+
+// the shipped case with its entrainment zone split: a jet holding `share` of
+// the zone's kernels with the zone's means (the rest's then the same)
+Case withJet(Case c, double share)
+{
+    for (Region& r : c.regions)
+        if (r.name == "entrainment") addJet(c, share, r);
+    transferCoefficients(c);
+    return c;
+}
+
+} // namespace
+
+TEST(Spouted, TheJetFeedsBothPathsItsRestOnlyTheSeepage)
+{
+    const double share = 0.35;
+    Case c = withJet(shortBatch(2000, 1), share);
+    ASSERT_EQ(c.regions.back().name, "jet");
+    const Case zoneExchanging = c;
+    for (Region& r : c.regions)
+        if (r.name != "jet") r.h = r.km = 0;
+    const Result jet = run(c);
+    const double jetT = gasTemperatureOf(c, jet, "jet");
+    EXPECT_LT(jetT, c.inletC - 1);
+    EXPECT_GT(jet.waterKg, 1e-6); // its kernels dried there
+    for (const char* name : {"spout", "downcomer", "fountain"})
+        EXPECT_NEAR(gasTemperatureOf(c, jet, name), jetT, 1e-9) << name;
+    c = zoneExchanging;
+    for (Region& r : c.regions)
+        if (r.name != "entrainment") r.h = r.km = 0;
+    const Result rest = run(c);
+    const double restT = (gasTemperatureOf(c, rest, "entrainment") - share * c.inletC) / (1 - share);
+    EXPECT_LT(restT, c.inletC - 1);
+    EXPECT_NEAR(gasTemperatureOf(c, rest, "downcomer"), restT, 1e-6);
+    for (const char* name : {"jet", "spout"})
+        EXPECT_NEAR(gasTemperatureOf(c, rest, name), c.inletC, 1e-9) << name;
+    const auto W = [&](const char* name) { return rest.gasW[regionOf(c, name)]; };
+    EXPECT_NEAR(W("fountain"), c.spoutShare * c.inletW + (1 - c.spoutShare) * W("downcomer"), 1e-12);
+    // the jet's kernels are its share of the zone's; the balances close
+    EXPECT_NEAR(rest.holdup.back(), share * rest.holdup[3], 1e-15);
+    const Result all = run(zoneExchanging);
+    EXPECT_LT(all.waterBalanceRel, 1e-6);
+    EXPECT_LT(all.energyBalanceRel, 1e-6);
+}
+
+TEST(Spouted, TheRecycleBringsTheRestsGasBackIntoTheJet)
+{
+    // only the rest of the zone exchanges: without a recycle the jet sees the
+    // inlet air; with one, some of the rest's cooled gas, and the rest, which
+    // more of the jet's gas crosses, is warmer
+    Case c = withJet(shortBatch(2000, 1), 0.35);
+    for (Region& r : c.regions)
+        if (r.name != "entrainment") r.h = r.km = 0;
+    const Result alone = run(c);
+    c.jetRecycle = 0.05;
+    const Result back = run(c);
+    EXPECT_NEAR(gasTemperatureOf(c, alone, "jet"), c.inletC, 1e-9);
+    EXPECT_LT(gasTemperatureOf(c, back, "jet"), c.inletC - 0.1);
+    EXPECT_GT(gasTemperatureOf(c, back, "entrainment"), gasTemperatureOf(c, alone, "entrainment") + 0.1);
+    EXPECT_LT(back.waterBalanceRel, 1e-6);
+    EXPECT_LT(back.energyBalanceRel, 1e-6);
 }
