@@ -89,11 +89,19 @@ void CirculationStatistics::enter(double t, int state, double* track)
 {
     const int left = int(track[0]);
     if (track[1] >= 0)
+    {
         addResidence(left, t - track[1], t);
+        if (left == entrainmentRegion && track[4] > 0)
+        {
+            const auto bin = std::min(int(track[3] / track[4] * nJetFractionBins), nJetFractionBins - 1);
+            jetFractions_[std::size_t(bin)] += 1;
+        }
+    }
     else
         openStart_[std::size_t(left)] += t - (-track[1] - 1);
     track[0] = state;
     track[1] = t;
+    track[3] = track[4] = 0;
     entries_[std::size_t(state)] += 1;
     if (state != spoutRegion) return;
     if (track[2] >= 0) addResidence(cycle, t - track[2], t);
@@ -112,6 +120,7 @@ void CirculationStatistics::observe(double t, const Vec3& x, double* track, cons
         track[0] = state = region;
         track[1] = -1 - t;
         track[2] = -1;
+        track[3] = track[4] = 0;
     }
     else if (region == (state + 1) % nCirculationRegions)
     {
@@ -127,7 +136,9 @@ void CirculationStatistics::observe(double t, const Vec3& x, double* track, cons
     const double values[nSampleQuantities] = {seen.voidage, seen.slipRe, seen.h,        seen.km,
                                               seen.Tgas,    seen.Y,      seen.Tparticle};
     for (int q = 0; q < nSampleQuantities; ++q) seen_[s][std::size_t(q)] += values[q];
+    track[4] += 1;
     if (state != entrainmentRegion || !regions_.inJet(x.x, x.z)) return;
+    track[3] += 1;
     jetOccupancy_ += 1;
     for (int q = 0; q < nSampleQuantities; ++q) jetSeen_[std::size_t(q)] += values[q];
 }
@@ -172,7 +183,7 @@ std::array<double, nCirculationRegions> CirculationStatistics::openAtEnd(const s
 }
 
 // Layout: sampleTimes, skipped, entries[4], occupancy[4], openStart[4], seen[4][7],
-// jetOccupancy, jetSeen[7], per
+// jetOccupancy, jetSeen[7], jetFractions[20], per
 // distribution (5) the moments all, first, second (3 each), then the number
 // of bins n and the 5 histograms of n bins each.
 std::size_t CirculationStatistics::bins() const
@@ -191,6 +202,7 @@ std::vector<double> CirculationStatistics::pack(std::size_t minBins, bool counts
     for (const auto& row : seen_) p.insert(p.end(), row.begin(), row.end());
     p.push_back(jetOccupancy_);
     p.insert(p.end(), jetSeen_.begin(), jetSeen_.end());
+    p.insert(p.end(), jetFractions_.begin(), jetFractions_.end());
     const std::size_t bins = std::max(minBins, this->bins());
     for (const ResidenceDistribution& d : residence_)
     {
@@ -210,9 +222,9 @@ std::vector<double> CirculationStatistics::pack(std::size_t minBins, bool counts
 namespace
 {
 
-constexpr std::size_t fixedPackSize = 2 + 3 * nCirculationRegions
-                                      + (nCirculationRegions + 1) * nSampleQuantities + 1
-                                      + (nCirculationRegions + 1) * 9;
+constexpr std::size_t fixedPackSize =
+    2 + 3 * nCirculationRegions + (nCirculationRegions + 1) * nSampleQuantities + 1
+    + CirculationStatistics::nJetFractionBins + (nCirculationRegions + 1) * 9;
 
 } // namespace
 
@@ -240,6 +252,7 @@ void CirculationStatistics::add(const std::vector<double>& packed)
     }
     jetOccupancy_ += packed[k++];
     for (double& v : jetSeen_) v += packed[k++];
+    for (double& v : jetFractions_) v += packed[k++];
     for (ResidenceDistribution& d : residence_)
     {
         for (Moments* m : {&d.all, &d.halves[0], &d.halves[1]})
@@ -266,6 +279,7 @@ void CirculationStatistics::clear()
     seen_ = {};
     jetOccupancy_ = 0;
     jetSeen_ = {};
+    jetFractions_ = {};
     sampleTimes_ = 0;
     skipped_ = 0;
 }

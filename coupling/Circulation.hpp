@@ -27,9 +27,13 @@
 // Each particle's track is trackWidth doubles kept with the particle (in the
 // solver a LIGGGHTS per-atom property, so it follows the atom across ranks and
 // into restarts): the state (-1 before the particle is first seen), the time
-// it entered the state (-1: an incomplete visit) and the time of its last
-// entry into the spout (-1: none yet). An incomplete visit keeps the time t
-// it was first seen as -1 - t.
+// it entered the state (-1: an incomplete visit), the time of its last
+// entry into the spout (-1: none yet), and the samples of the visit so far,
+// all and those in the jet. An incomplete visit keeps the time t it was
+// first seen as -1 - t. Each completed visit of the entrainment state adds
+// the share of its samples found in the jet to a histogram (jetFractions,
+// bins of 1/nJetFractionBins): how much of its time in the zone a kernel
+// spends in the jet varies from visit to visit.
 //
 // Little's law over the finite window, with its boundary terms, holds exactly
 // per state: holdup x window = the completed residences + the time of the
@@ -125,7 +129,8 @@ struct ResidenceDistribution
 class CirculationStatistics
 {
 public:
-    static constexpr int trackWidth = 3;
+    static constexpr int trackWidth = 5;
+    static constexpr int nJetFractionBins = 20;
     static constexpr int cycle = nCirculationRegions; // index of the cycle's distribution
 
     // averageStart: tracking and sums start at samples t >= averageStart;
@@ -156,6 +161,9 @@ public:
     // the same over the samples of the entrainment state found in the jet
     double jetHoldup() const;
     double meanSeenInJet(int quantity) const;
+    // completed entrainment visits by the share of their samples in the jet
+    // (bin i: [i, i + 1) / nJetFractionBins, the last closed)
+    const std::array<double, nJetFractionBins>& jetFractions() const { return jetFractions_; }
     // samples of particles found in the region two steps ahead of their state
     // (a skipped region: the sampling was too coarse), over all states
     double skippedSamples() const { return skipped_; }
@@ -187,6 +195,7 @@ private:
     std::array<std::array<double, nSampleQuantities>, nCirculationRegions> seen_{};
     double jetOccupancy_ = 0;
     std::array<double, nSampleQuantities> jetSeen_{};
+    std::array<double, nJetFractionBins> jetFractions_{};
     double sampleTimes_ = 0;
     double skipped_ = 0;
 

@@ -587,9 +587,16 @@ std::string CirculationCoupling::conditionsJson() const
             + number(stats_.openAtStart(s)) + ", \"openAtEnd\": " + number(openEnd_[s]);
         if (s == entrainmentRegion)
         {
+            std::string counts;
+            for (const double n : stats_.jetFractions())
+            {
+                counts += (counts.empty() ? "" : ", ") + number(n);
+            }
             j += ",\n      \"jet\": {"
                 + seenJson(stats_.jetHoldup(), [&](int q) { return stats_.meanSeenInJet(q); })
-                + "}";
+                + ",\n        \"visitFractions\": {\"binWidth\": "
+                + number(1.0/CirculationStatistics::nJetFractionBins) + ", \"counts\": ["
+                + counts + "]}}";
         }
         j += "}";
     }

@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numeric>
 #include <vector>
 
 using namespace spoutlab;
@@ -323,6 +324,27 @@ TEST(CirculationStatistics, JetIsTheEntrainmentStateUnderTheSpout)
     EXPECT_NEAR(stats.jetHoldup(), 1.5, 1e-15);
     EXPECT_NEAR(stats.meanSeenInJet(4), 420.0, 1e-12);
     EXPECT_NEAR(stats.meanSeen(entrainmentRegion, 4), (420.0 * 3 + 350) / 4, 1e-12);
+}
+
+// Each completed entrainment visit: the share of its samples in the jet.
+TEST(CirculationStatistics, JetFractionPerVisit)
+{
+    CirculationStatistics stats(bed, 0.0, 100.0, 0.05);
+    const Vec3 besideJet{0.1, 0.02, 0.05};
+    std::vector<double> a = freshTrack(), b = freshTrack(), c = freshTrack();
+    follow(stats, a,
+           repeat(inDowncomer, 1) + repeat(besideJet, 3) + repeat(inEntrainment, 1) + repeat(inSpout, 1), 0.0,
+           0.1);
+    follow(stats, b, repeat(inDowncomer, 1) + repeat(inEntrainment, 2) + repeat(inSpout, 1), 0.0, 0.1);
+    // first seen in the zone: an incomplete visit, not counted
+    follow(stats, c, repeat(inEntrainment, 2) + repeat(inSpout, 1), 0.0, 0.1);
+    const auto& f = stats.jetFractions();
+    EXPECT_EQ(f[5], 1.0);  // 1 of 4 samples: 0.25
+    EXPECT_EQ(f[19], 1.0); // all: the last bin, closed
+    EXPECT_EQ(std::accumulate(f.begin(), f.end(), 0.0), 2.0);
+    CirculationStatistics restored(bed, 0.0, 100.0, 0.05);
+    restored.unpack(stats.pack());
+    EXPECT_EQ(restored.jetFractions(), f);
 }
 
 // Packed statistics add up over ranks and restore exactly.

@@ -169,6 +169,7 @@ public:
     // the samples
     std::vector<int> region;
     std::vector<double> left, X, T, above;
+    std::vector<double> inJet; // the share of its current visit a sample spends in its region's jet
     std::vector<std::uint64_t> rng;
     std::vector<double> state;
     std::size_t width;
@@ -186,11 +187,13 @@ public:
     std::vector<double> holdupTime;
     std::vector<double> gasTTime, gasWTime; // the compartments' gas times dt
     std::vector<Residence> residence;       // the regions', prepared for drawing
+    Residence jetFractions;                 // the jet's visitFractions, prepared
     std::vector<double> occupancy;          // kernels per region at the step's start
     std::size_t cycle;                      // the regions of the cycle (the first)
 
 private:
     void place(std::size_t i);
+    void enter(std::size_t i, std::size_t r);
     void advance(std::size_t i, double dt, Exchange& ex);
     void visit(std::size_t i, double tau, Exchange& ex);
     void segment(std::size_t i, std::size_t r, double tau, Exchange& ex);
@@ -212,6 +215,13 @@ Bed::Bed(const Case& cs) : c(cs)
     above.assign(n, 0.0);
     rng.resize(n);
     state.assign(n * width, 0.0);
+    inJet.assign(n, 0.0);
+    for (const Region& r : c.regions)
+        if (r.partOf >= 0)
+        {
+            jetFractions = r.visitFractions;
+            jetFractions.prepare();
+        }
     cycle = static_cast<std::size_t>(
         std::count_if(c.regions.begin(), c.regions.end(), [](const Region& r) { return r.partOf < 0; }));
     holdupTime.assign(c.regions.size(), 0.0);
@@ -260,6 +270,22 @@ void Bed::place(std::size_t i)
     region[i] = static_cast<int>(k);
     const double u1 = uniform(rng[i]), u2 = uniform(rng[i]), u3 = uniform(rng[i]);
     left[i] = residence[k].drawResidual(u1, u2, u3);
+    enter(i, k);
+}
+
+// A visit of region r begins: the share of it in the region's jet.
+void Bed::enter(std::size_t i, std::size_t r)
+{
+    const int jet = c.regions[r].jet;
+    if (jet < 0) return;
+    const Region& j = c.regions[static_cast<std::size_t>(jet)];
+    if (j.visitFractions.counts.empty())
+        inJet[i] = j.share;
+    else
+    {
+        const double u1 = uniform(rng[i]), u2 = uniform(rng[i]);
+        inJet[i] = std::min(jetFractions.draw(u1, u2), 1.0);
+    }
 }
 
 // The gas along its paths, in the gas's order: all of it crosses the
@@ -383,18 +409,15 @@ void Bed::solveGas()
     std::vector<double> kernels(nr, 0.0), sumT(nr, 0.0);
     for (std::size_t i = 0; i < X.size(); ++i)
     {
-        kernels[static_cast<std::size_t>(region[i])] += weight;
-        sumT[static_cast<std::size_t>(region[i])] += weight * T[i];
-    }
-    for (std::size_t r = cycle; r < nr; ++r)
-    {
-        // a compartment holds its share of its region's kernels
-        const std::size_t in = static_cast<std::size_t>(c.regions[r].partOf);
-        const double s = c.regions[r].share;
-        kernels[r] = s * kernels[in];
-        sumT[r] = s * sumT[in];
-        kernels[in] -= kernels[r];
-        sumT[in] -= sumT[r];
+        // a sample in a region with a jet: its share of the visit there
+        const std::size_t r = static_cast<std::size_t>(region[i]);
+        const int jet = c.regions[r].jet;
+        const double there = jet < 0 ? 0.0 : inJet[i];
+        kernels[r] += weight * (1 - there);
+        sumT[r] += weight * (1 - there) * T[i];
+        if (jet < 0) continue;
+        kernels[static_cast<std::size_t>(jet)] += weight * there;
+        sumT[static_cast<std::size_t>(jet)] += weight * there * T[i];
     }
     GasPaths paths(c, inletEnthalpy());
     const double recycle = c.airFlow * c.jetRecycle;
@@ -426,9 +449,9 @@ void Bed::visit(std::size_t i, double tau, Exchange& ex)
     const std::size_t r = static_cast<std::size_t>(region[i]);
     const int jet = c.regions[r].jet;
     if (jet < 0) return segment(i, r, tau, ex);
-    const double inJet = c.regions[static_cast<std::size_t>(jet)].share * tau;
-    segment(i, r, tau - inJet, ex);
-    segment(i, static_cast<std::size_t>(jet), inJet, ex);
+    const double jetTime = inJet[i] * tau;
+    segment(i, r, tau - jetTime, ex);
+    segment(i, static_cast<std::size_t>(jet), jetTime, ex);
 }
 
 // One kernel over tau in gas compartment r: the CFD-DEM coupling step's sequence.
@@ -476,6 +499,7 @@ void Bed::advance(std::size_t i, double dt, Exchange& ex)
             region[i] = static_cast<int>(next);
             const double u1 = uniform(rng[i]), u2 = uniform(rng[i]);
             left[i] = residence[next].draw(u1, u2);
+            enter(i, next);
         }
     }
 }
@@ -495,7 +519,8 @@ void Bed::step(double dt)
     {
         // a region with a compartment: the gas its kernels saw, time-weighted
         const std::size_t in = static_cast<std::size_t>(c.regions[r].partOf);
-        const double s = c.regions[r].share;
+        const double all = occupancy[r] + occupancy[in];
+        const double s = all > 0 ? occupancy[r] / all : c.regions[r].share;
         gasTTime[in] += s * (seen.region[r].T - seen.region[in].T) * dt;
         gasWTime[in] += s * (seen.region[r].W - seen.region[in].W) * dt;
     }
@@ -507,7 +532,12 @@ void Bed::step(double dt)
         ex.sorption[r] *= weight;
         result.sorptionJ += ex.sorption[r];
     }
-    for (const int r : region) holdupTime[static_cast<std::size_t>(r)] += dt;
+    for (std::size_t i = 0; i < X.size(); ++i)
+    {
+        const std::size_t r = static_cast<std::size_t>(region[i]);
+        holdupTime[r] += dt;
+        if (c.regions[r].jet >= 0) holdupTime[static_cast<std::size_t>(c.regions[r].jet)] += inJet[i] * dt;
+    }
     booked = gasFor(ex, dt);
     const double G = c.airFlow;
     gasWater += G * (booked.outlet.W - c.inletW) * dt;
@@ -607,10 +637,8 @@ void finish(Bed& bed, double heaterJ)
     for (const double a : bed.above) above += a;
     r.meanTimeAbove = above / static_cast<double>(bed.above.size());
     double total = 0;
-    for (const double h : bed.holdupTime) total += h;
+    for (std::size_t k = 0; k < bed.cycle; ++k) total += bed.holdupTime[k];
     for (const double h : bed.holdupTime) r.holdup.push_back(total > 0 ? h / total : 0.0);
-    for (std::size_t k = bed.cycle; k < r.holdup.size(); ++k)
-        r.holdup[k] = c.regions[k].share * r.holdup[static_cast<std::size_t>(c.regions[k].partOf)];
     for (std::size_t k = 0; k < bed.gasTTime.size(); ++k)
     {
         r.gasT.push_back(bed.t > 0 ? bed.gasTTime[k] / bed.t : bed.seen.region[k].T);

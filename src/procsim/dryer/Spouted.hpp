@@ -116,6 +116,9 @@ struct Region
     // spent in it; the region then names it in `jet`. -1: none.
     int partOf = -1, jet = -1;
     double share = 1;
+    // the jet: its share of each visit of its region, per visit (a histogram
+    // on [0, 1]; empty: every visit spends `share` in it)
+    Residence visitFractions;
 };
 
 // Gas properties as constant/transportProperties has them.

@@ -112,6 +112,35 @@ struct CaseGeometry
     double velocity = 0, massFlow = 0;
 };
 
+// The jet's share of each entrainment visit: a histogram over [0, 1].
+Residence readVisitFractions(const YamlInput& f)
+{
+    Residence res;
+    res.binWidth = f.within("binWidth", 1e-6, 1);
+    const YAML::Node n = f.node()["counts"];
+    const double bins = n && n.IsSequence() ? static_cast<double>(n.size()) : 0;
+    if (std::fabs(bins * res.binWidth - 1) > 1e-9)
+        throw f.error("counts",
+                      "1/binWidth = " + formatNumber(1 / res.binWidth) + " counts (bins over [0, 1])");
+    double sum = 0;
+    for (std::size_t i = 0; i < n.size(); ++i)
+    {
+        const auto v = n[i].IsScalar() ? parseInteger(n[i].Scalar(), 0, 2000000000L) : std::nullopt;
+        if (!v)
+            throw InputError(f.file() + ": key '" + f.path() + ".counts[" + std::to_string(i)
+                             + "]' expected a count (an integer >= 0)");
+        res.counts.push_back(static_cast<double>(*v));
+        sum += static_cast<double>(*v);
+    }
+    if (sum < kMinResidences)
+        throw f.error("counts",
+                      "at least " + std::to_string(kMinResidences)
+                          + " visits: too few cycles for a distribution; average over a longer run");
+    res.samples = static_cast<long>(sum);
+    res.mean = res.histogramMean();
+    return res;
+}
+
 // The jet under the spout (conditions.entrainment.jet, where the statistics
 // have it, as spoutFoam's do): a gas compartment of the entrainment zone
 // (spouted::addJet).
@@ -129,7 +158,15 @@ void readJet(const YamlInput& cond, Case& c)
     jet.kmFile = j.within("km", 0, 1e3, "m/s");
     jet.gasTemperatureFile = j.within("Tgas", 0, 2000, "K");
     jet.gasHumidityFile = j.within("humidityRatio", -1, 0, 1);
+    if (j.has("visitFractions")) jet.visitFractions = readVisitFractions(j.child("visitFractions"));
     addJet(c, share, jet);
+    const Region& rest = c.regions[static_cast<std::size_t>(c.regions.back().partOf)];
+    const std::pair<const char*, double> beside[] = {
+        {"slipRe", rest.slipReynolds}, {"voidage", rest.voidage}, {"h", rest.hFile}, {"km", rest.kmFile}};
+    for (const auto& [key, v] : beside)
+        if (!(v >= 0))
+            throw j.error(key, "a mean the zone's can hold (the rest beside the jet came out "
+                                   + formatNumber(v) + ")");
 }
 
 // The statistics: checked against the case, their regions into c.

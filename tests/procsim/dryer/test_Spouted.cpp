@@ -385,6 +385,30 @@ TEST(Spouted, TheJetFeedsBothPathsItsRestOnlyTheSeepage)
     EXPECT_LT(all.energyBalanceRel, 1e-6);
 }
 
+TEST(Spouted, EachVisitSpendsItsDrawnShareInTheJet)
+{
+    // only the jet dries: visits all in the jet or all beside it (half each)
+    // give the jet the same holdup as every visit half in it, and a wider
+    // spread of the kernels' moisture
+    Case c = withJet(shortBatch(2000, 1), 0.5);
+    for (Region& r : c.regions)
+        if (r.name != "jet") r.h = r.km = 0;
+    const Result half = run(c);
+    Residence f;
+    f.binWidth = 0.05;
+    f.counts.assign(20, 0.0);
+    f.counts.front() = f.counts.back() = 500;
+    f.samples = 1000;
+    c.regions.back().visitFractions = f;
+    const Result split = run(c);
+    const std::size_t zone = regionOf(c, "entrainment"), jet = regionOf(c, "jet");
+    EXPECT_NEAR(half.holdup[jet], 0.5 * half.holdup[zone], 1e-12);
+    EXPECT_NEAR(split.holdup[jet] / split.holdup[zone], 0.5, 0.03); // sampling: 2000 kernels
+    EXPECT_GT(split.finalStd, 1.5 * half.finalStd);
+    EXPECT_LT(split.waterBalanceRel, 1e-6);
+    EXPECT_LT(split.energyBalanceRel, 1e-6);
+}
+
 TEST(Spouted, TheRecycleBringsTheRestsGasBackIntoTheJet)
 {
     // only the rest of the zone exchanges: without a recycle the jet sees the
