@@ -63,6 +63,7 @@ def options(argv):
                    help='the last seconds of each step averaged (default %(default)s)')
     p.add_argument('-n', type=int, help='particles (default: system/spoutedBedDict)')
     p.add_argument('--case', default='.', help='the case copy (default: the working directory)')
+    cli.add_overrides(p, 'system/spoutedBedDict (e.g. insertionSeed=15485867)')
     a = cli.parse(p, argv)
     if not 0 < a.average <= a.hold:
         p.error('--average must lie in (0, --hold]')
@@ -79,6 +80,7 @@ def run(a):
     cmd = ['./Allrun', '-s', ','.join(pairs), '-t', '%.10g' % (len(a.schedule) * a.hold)]
     if a.n:
         cmd += ['-n', str(a.n)]
+    cmd += a.overrides
     print('minimumSpouting3D: %s' % ' '.join(cmd), flush=True)
     if subprocess.call(cmd, cwd=a.case) != 0:
         sys.exit('minimumSpouting3D: the run failed (see the case\'s log.* files)')
@@ -126,7 +128,7 @@ def minimum_spouting(table):
     return found
 
 
-def picture(case, ref, weight, n):
+def picture(case, ref, weight, n, umin, umax):
     """ums.png: dP against u_s on both branches (ums.csv), the correlation's
     u_ms with its band and the dP band."""
     lo, hi = ref * (1 - UMS_BAND), ref * (1 + UMS_BAND)
@@ -135,7 +137,8 @@ set title "3-D spouted bed, %d particles: pressure drop vs superficial velocity"
 set xlabel "superficial gas velocity u_s [m/s]"
 set ylabel "bed pressure drop [Pa]"
 set grid
-set key bottom right
+set key top right
+set xrange [%.6g:%.6g]
 set datafile separator ","
 set object 1 rect from %.6g, graph 0 to %.6g, graph 1 fc rgb "#e8e8e8" fs solid behind
 set object 2 rect from graph 0, first %.6g to graph 1, first %.6g fc rgb "#d8f0d8" fs solid behind
@@ -143,9 +146,9 @@ set arrow 1 from %.6g, graph 0 to %.6g, graph 1 nohead dt 2
 plot "%s" skip 1 using 1:(strcol(2) eq "up" ? $3 : 1/0):4 with yerrorlines pt 7 title "u_s rising", \\
      "%s" skip 1 using 1:(strcol(2) eq "down" ? $3 : 1/0):4 with yerrorlines pt 5 title "u_s falling", \\
      %.6g with lines lt -1 title "bed weight / column area", \\
-     1/0 with boxes fc rgb "#e8e8e8" fs solid title "Mathur-Gishler u_ms (dashed) +-%d %%", \\
+     1/0 with boxes fc rgb "#e8e8e8" fs solid title "Mathur-Gishler u_{ms} (dashed) +/-%d %%", \\
      1/0 with boxes fc rgb "#d8f0d8" fs solid title "%.2f-%.2f of the bed weight / area"
-''' % (n, lo, hi, DP_BAND[0] * weight, DP_BAND[1] * weight, ref, ref,
+''' % (n, umin - 0.1, umax + 0.1, lo, hi, DP_BAND[0] * weight, DP_BAND[1] * weight, ref, ref,
        os.path.join(case, 'ums.csv'), os.path.join(case, 'ums.csv'), weight,
        round(100 * UMS_BAND), DP_BAND[0], DP_BAND[1]))
 
@@ -218,7 +221,7 @@ def report(a, g, case):
         f.write(text)
     with open(os.path.join(case, 'ums.json'), 'w') as f:
         json.dump(result, f, indent=1)
-    picture(case, ref, weight, n)
+    picture(case, ref, weight, n, min(a.schedule), max(a.schedule))
     files = sc.particle_files(case)
     for row, name in ((max(table, key=lambda q: q['u_s']), 'top'), (ums, 'ums')):
         if row:
