@@ -207,9 +207,11 @@ def bed3d_section(case, k):
     from spoutlab.protocols import minimumspouting3d as m
     u = read_json(case, 'ums.json', 'protocols/minimumSpouting3D')
     name = 'bed3d' if k == 0 else 'bed3d.run%d' % (k + 1)
-    settings = ('%d particles, bed %.3f m deep, D_c %.3f m, D_i %.4f m; steps %s m/s'
-                % (u['particles'], u['bed_depth_m'], u['D_c_m'], u['D_i_m'],
-                   ' '.join('%g' % s['u_s'] for s in u['steps'])))
+    from spoutlab import spoutedbed3d
+    settings = ('%d particles (insertionSeed %d), bed %.3f m deep, D_c %.3f m, D_i %.4f m; '
+                'steps %s m/s' % (u['particles'], spoutedbed3d.load(case).seed,
+                                  u['bed_depth_m'], u['D_c_m'], u['D_i_m'],
+                                  ' '.join('%g' % s['u_s'] for s in u['steps'])))
     hours = '%.2f h' % (wall_time(case) / 3600)
     ref = u['mathur_gishler_u_ms_m_s']
     if u['u_ms_m_s'] is None:
