@@ -1,8 +1,12 @@
 """The three-dimensional spouted bed's geometry (spoutlab.spoutedbed3d, the
-case's system/spoutedBedDict), Mathur and Gishler's u_ms, and the rule of
-minimumSpouting3D that reads u_ms off the decreasing branch."""
+case's system/spoutedBedDict), Mathur and Gishler's u_ms, the rule of
+minimumSpouting3D that reads u_ms off the decreasing branch, and the case's
+command lines (--help; a bad option one line, status 2, in a copy)."""
 import math
 import os
+import shutil
+import subprocess
+import tempfile
 import unittest
 
 from spoutlab import spoutedbed3d
@@ -66,6 +70,31 @@ class MinimumSpoutingRule(unittest.TestCase):
     def test_the_schedule_must_fall_after_its_peak(self):
         with self.assertRaises(SystemExit):
             minimumspouting3d.options(['--schedule', '1.6,2.0,2.4'])
+
+
+class Commands(unittest.TestCase):
+    def test_help_and_a_bad_option(self):
+        top = os.path.abspath(os.environ.get('SPOUTLAB_DIR', os.path.join(CASE, '..', '..')))
+        with tempfile.TemporaryDirectory() as tmp:
+            case = os.path.join(tmp, 'spoutedBed3D')
+            shutil.copytree(CASE, case, symlinks=True)
+            env = dict(os.environ, SPOUTLAB_DIR=top)
+            for command in ('generate', 'inletVelocity', 'evaluate',
+                            os.path.join('protocols', 'minimumSpouting3D')):
+                name = os.path.basename(command)
+                with self.subTest(command=name):
+                    shown = subprocess.run([os.path.join(case, command), '--help'], cwd=case,
+                                           capture_output=True, text=True, env=env, timeout=60)
+                    self.assertEqual(shown.returncode, 0, shown.stderr)
+                    self.assertTrue(shown.stdout.startswith('usage: %s ' % name), shown.stdout)
+                    needs = ['2'] if name == 'inletVelocity' else []
+                    bad = subprocess.run([os.path.join(case, command)] + needs + ['--bogus'],
+                                         cwd=case, capture_output=True, text=True, env=env,
+                                         timeout=60)
+                    self.assertEqual(bad.returncode, 2, bad.stderr)
+                    self.assertEqual(bad.stderr.splitlines(),
+                                     ['%s: unrecognized arguments: --bogus (%s --help lists '
+                                      'the options)' % (name, name)])
 
 
 if __name__ == '__main__':
