@@ -51,8 +51,10 @@ FOUNTAIN_SHARE = 0.01
 # source in this repository: a number to check against it)
 UMS_BAND = 0.20
 # dP_ms over the bed's weight per area: Mamuro and Hattori's model of the
-# annulus gives 0.75 for a fully developed spout; measured beds with
-# conical bases lie near 0.6-0.8, taken as the band
+# annulus (J. Chem. Eng. Japan 1 (1968) 1) gives 0.75 for a fully developed
+# spout, Lefroy and Davidson's 2/pi = 0.64; 0.6-0.8 is taken as the band of
+# measured beds with conical bases (as UMS_BAND, not restated from a source
+# in this repository: to check against Mathur and Epstein's monograph)
 DP_BAND = (0.6, 0.8)
 DEFAULT_SCHEDULE = '1.6,2.2,2.8,2.6,2.4,2.2,2.0,1.8,1.6'
 
