@@ -11,6 +11,9 @@ COMMANDS = {
     'minimumSpouting': ('minimumspouting', 'the minimum spouting velocity and the '
                         'pressure-drop loop of Fig 2 (draft-plate paper section 4.1, '
                         'no-draft paper)'),
+    'minimumSpouting3D': ('minimumspouting3d', 'u_ms and dP_ms of the three-dimensional '
+                          'spouted bed (openfoam_cases/spoutedBed3D) beside Mathur and '
+                          "Gishler's correlation"),
     'circulation': ('circulation', 'the particle circulation rate W_s against the gas '
                     'velocity and the friction coefficient (draft-plate paper section 4.4)'),
     'profiles': ('profiles', 'time-averaged spout and downcomer profiles (draft-plate '

@@ -8,7 +8,7 @@ no-draft one) are copied to docs/figures/.
 Each protocol takes tens of minutes, so the file is in sections -- minimum
 spouting, circulation vs friction, circulation vs velocity, profiles, heat
 transfer, drying, drying time, coarse graining, each no-draft-plate bed,
-velocity maps, mixing -- and a call rewrites the
+velocity maps, mixing, the 3-D bed -- and a call rewrites the
 sections whose runs it is given and keeps the others (likewise the rows of
 results.csv, by section).
 """
@@ -197,6 +197,43 @@ def coarse_section(case, csv_path):
                  '%.2f h' % r.hours))
     return name, rows + r.loop_rows() + r.branch_rows(), keys, \
         [('ums.png', 'coarse_%s_pressure_drop.png' % name)]
+
+
+def bed3d_section(case, k):
+    """The three-dimensional bed (issue 27 item 4): protocols/minimumSpouting3D
+    in a copy of openfoam_cases/spoutedBed3D, beside Mathur and Gishler's
+    u_ms and the dP_ms band; the k-th run given (another realisation) is
+    keyed bed3d.run<k + 1>."""
+    from spoutlab.protocols import minimumspouting3d as m
+    u = read_json(case, 'ums.json', 'protocols/minimumSpouting3D')
+    name = 'bed3d' if k == 0 else 'bed3d.run%d' % (k + 1)
+    from spoutlab import spoutedbed3d
+    settings = ('%d particles (insertionSeed %d), bed %.3f m deep, D_c %.3f m, D_i %.4f m; '
+                'steps %s m/s' % (u['particles'], spoutedbed3d.load(case).seed,
+                                  u['bed_depth_m'], u['D_c_m'], u['D_i_m'],
+                                  ' '.join('%g' % s['u_s'] for s in u['steps'])))
+    hours = '%.2f h' % (wall_time(case) / 3600)
+    ref = u['mathur_gishler_u_ms_m_s']
+    if u['u_ms_m_s'] is None:
+        return [('u_ms, 3-D bed', 'none: no spouting step on the decreasing branch',
+                 '%.3g m/s (Mathur-Gishler)' % ref, settings, hours)], [], []
+    ratio = u['dP_ms_ratio']
+    rows = [('u_ms, 3-D bed (the last spouting step, falling u_s)',
+             '%.3g m/s (%+.1f %%)' % (u['u_ms_m_s'], 100 * u['u_ms_rel_error']),
+             '%.3g m/s (Mathur-Gishler, band +-%d %%)' % (ref, round(100 * m.UMS_BAND)),
+             settings, hours),
+            ('dP_ms / bed weight per area, 3-D bed', '%.3f (%.0f Pa)' % (ratio, u['dP_ms_Pa']),
+             '%.2f-%.2f' % m.DP_BAND, settings, hours)]
+    keys = [('%s.u_ms_m_s' % name, '%.4g' % u['u_ms_m_s'], 'm/s', '%.4g' % ref,
+             'Mathur-Gishler at the settled depth; ' + settings),
+            ('%s.dP_ms_kPa' % name, '%.4g' % (u['dP_ms_Pa'] / 1000), 'kPa',
+             '%.4g' % (0.75 * u['bed_weight_per_area_Pa'] / 1000),
+             'paper_value: 0.75 of the bed weight per area (band %.2f-%.2f)' % m.DP_BAND)]
+    tag = '' if k == 0 else '_run%d' % (k + 1)
+    figs = [('ums.png', 'bed3d_pressure_drop%s.png' % tag)]
+    figs += [(f, 'bed3d_%s%s.png' % (f[len('snapshot_'):-4], tag))
+             for f in sorted(os.listdir(case)) if f.startswith('snapshot_') and f.endswith('.png')]
+    return rows, keys, figs
 
 
 # the no-draft paper's bed heights [m] by particle count
@@ -650,6 +687,8 @@ SECTIONS = [
     ('maps', 'Gas and particle velocity without draft plates (no-draft paper, Figs 3-4)'),
     ('mixing', 'Degree of mixing (draft-plate paper section 4.6, Fig 10; no-draft paper '
                'Figs 5-6)'),
+    ('bed3d', 'Three-dimensional spouted bed: u_ms and dP_ms against Mathur and Gishler '
+              '(issue 27 item 4)'),
 ]
 CSV_HEADER = ['key', 'value', 'unit', 'paper_value', 'note']
 
@@ -665,6 +704,8 @@ def section_of_key(key):
         return 'coarse'
     if key.startswith('mixing'):
         return 'mixing'
+    if key.startswith('bed3d'):
+        return 'bed3d'
     if key.startswith('draft.Ws_He'):
         return 'velocity'
     if key.startswith(('draft.Ws_mu', 'draft.dlogWs')):
@@ -676,7 +717,7 @@ FIGURES = {'ums': ('fig2_', 'fig3_'), 'friction': ('fig7_',), 'velocity': ('fig6
            'profiles': ('fig4_5_',), 'heat': ('fig11_', 'fig12_'), 'drying': ('drying_',),
            'drytime': ('drytime_',), 'coarse': ('coarse_',),
            'noplates10k': ('noplates10k_',), 'noplates26k': ('noplates26k_',),
-           'maps': ('noplates_maps_',), 'mixing': ('mixing_',)}
+           'maps': ('noplates_maps_',), 'mixing': ('mixing_',), 'bed3d': ('bed3d_',)}
 
 
 def remove_figures(section, figure_dir):
@@ -688,7 +729,7 @@ def remove_figures(section, figure_dir):
 
 
 def build(ums, circ, heat, figure_dir, noplates=(), maps=None, mixing=(), drying=None,
-          drytime=None, coarse=()):
+          drytime=None, coarse=(), bed3d=()):
     """section -> (table rows, results.csv rows, figure names) for the runs given."""
     new = {}
 
@@ -771,6 +812,13 @@ def build(ums, circ, heat, figure_dir, noplates=(), maps=None, mixing=(), drying
             r, k, p = mixing_section(case)
             rows, keys, pngs = rows + r, keys + k, pngs + copy(case, p, figure_dir)
         new['mixing'] = (rows, keys, pngs)
+    if bed3d:
+        remove_figures('bed3d', figure_dir)
+        rows, keys, pngs = [], [], []
+        for k, case in enumerate(bed3d):
+            r, kk, p = bed3d_section(case, k)
+            rows, keys, pngs = rows + r, keys + kk, pngs + copy(case, p, figure_dir)
+        new['bed3d'] = (rows, keys, pngs)
     return new
 
 
@@ -829,6 +877,9 @@ def parse(argv):
     p.add_argument('--mixing', action='append', default=[], metavar='MIXING_DIR',
                    help='a case copy where protocols/mixing ran (mixing.txt); repeat for '
                         'several, e.g. one with longer runs')
+    p.add_argument('--bed3d', action='append', default=[], metavar='UMS3D_DIR',
+                   help='a copy of openfoam_cases/spoutedBed3D where protocols/'
+                        'minimumSpouting3D ran (repeat for other realisations)')
     p.add_argument('-o', dest='out', metavar='RESULTS.md',
                    default=os.path.join(os.environ.get('SPOUTLAB_DIR', '../..'), 'docs',
                                         'RESULTS.md'),
@@ -846,13 +897,13 @@ def main(argv):
     out, cases, heat, noplates, maps, mixing = (a.out, a.cases, a.heat, a.noplates, a.maps,
                                                 a.mixing)
     if not (cases or heat or noplates or maps or mixing or a.drying or a.dryingTime
-            or a.coarse):
+            or a.coarse or a.bed3d):
         p.print_help()
         return 2
     ums = cases[0] if cases else None
     circ = cases[1] if len(cases) > 1 else None
     new = build(ums, circ, heat, os.path.join(os.path.dirname(out), 'figures'), noplates, maps,
-                mixing, a.drying, a.dryingTime, a.coarse)
+                mixing, a.drying, a.dryingTime, a.coarse, a.bed3d)
     old = old_sections(out)
     lines = ['# SpoutLab vs the source papers', '',
              'Written by `openfoam_cases/spoutDraftPlates/protocols/results` from the protocol',
