@@ -652,7 +652,8 @@ def drytime_section(case):
                          '; '.join('%s %.0f / %.0f, %.4f / %.4f'
                                    % ((k,) + tuple(c['regions'][k]['Tgas_C'])
                                       + tuple(c['regions'][k]['W']))
-                                   for k in ('spout', 'fountain', 'downcomer', 'entrainment'))
+                                   for k in ('spout', 'fountain', 'downcomer', 'entrainment',
+                                             'jet') if k in c['regions'])
                          + '; unlimited air %.2f x the direct rate'
                          % (c['rate_unlimited_air'] / c['rate_direct']), '', settings, wall))
         if 'rate_region_means' in c:

@@ -404,7 +404,6 @@ GasState Bed::solveRegion(std::size_t r, double flow, double W, double h, double
 
 void Bed::solveGas()
 {
-    if (c.gasAtInlet) return;
     const std::size_t nr = c.regions.size();
     std::vector<double> kernels(nr, 0.0), sumT(nr, 0.0);
     for (std::size_t i = 0; i < X.size(); ++i)
@@ -419,6 +418,8 @@ void Bed::solveGas()
         kernels[static_cast<std::size_t>(jet)] += weight * there;
         sumT[static_cast<std::size_t>(jet)] += weight * there * T[i];
     }
+    occupancy = kernels;
+    if (c.gasAtInlet) return;
     GasPaths paths(c, inletEnthalpy());
     const double recycle = c.airFlow * c.jetRecycle;
     GasPaths::walk(c, paths, [&](std::size_t r, int p) {
@@ -439,7 +440,6 @@ void Bed::solveGas()
         seen.region[r] = solveRegion(r, flow, W, h, kernels[r], sumT[r]);
         paths.leave(p, seen.region[r].W, psy::enthalpy(seen.region[r].T - kKelvin, seen.region[r].W));
     });
-    occupancy = kernels;
 }
 
 // One kernel over tau in its region: in a region with a jet first the time

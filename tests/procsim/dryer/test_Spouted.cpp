@@ -383,6 +383,10 @@ TEST(Spouted, TheJetFeedsBothPathsItsRestOnlyTheSeepage)
     const Result all = run(zoneExchanging);
     EXPECT_LT(all.waterBalanceRel, 1e-6);
     EXPECT_LT(all.energyBalanceRel, 1e-6);
+    // unlimited air: the jet at the inlet air as every region
+    Case unlimited = zoneExchanging;
+    unlimited.gasAtInlet = true;
+    EXPECT_NEAR(gasTemperatureOf(unlimited, run(unlimited), "jet"), c.inletC, 1e-9);
 }
 
 TEST(Spouted, EachVisitSpendsItsDrawnShareInTheJet)
