@@ -51,7 +51,6 @@ DemCoupling::DemCoupling
     U_(U),
     p_(p),
     voidfraction_(voidfraction),
-    phi_(phi),
     gas_{rho.value(), mu.value()},
     g_{g.value().x(), g.value().y(), g.value().z()},
     dict_
@@ -116,15 +115,16 @@ void DemCoupling::readControls()
         );
     }
     deleteLost_ = (lost == "delete");
-    dragVelocity_ = dict_.getOrDefault<Foam::word>("dragVelocity", "cellCentre");
-    if (dragVelocity_ != "cellCentre" && dragVelocity_ != "flux" && dragVelocity_ != "faceAverage")
+    const Foam::word velocity = dict_.getOrDefault<Foam::word>("dragVelocity", "cellCentre");
+    if (velocity != "cellCentre" && velocity != "flux")
     {
         throw InputError
         (
-            "constant/couplingProperties: key 'dragVelocity' expected 'cellCentre', "
-            "'flux' or 'faceAverage', got '" + dragVelocity_ + "'"
+            "constant/couplingProperties: key 'dragVelocity' expected 'cellCentre' "
+            "or 'flux', got '" + velocity + "'"
         );
     }
+    faceBalance_ = (velocity == "flux");
 }
 
 
@@ -261,9 +261,8 @@ void DemCoupling::deleteLost(VoidFractionResult& vf)
 
 void DemCoupling::exchange(const VoidFractionResult& vf)
 {
-    // the gas in this rank's cells and its halo, the drag's velocity u_d
-    const Foam::tmp<Foam::volVectorField> ud = dragVelocity();
-    const std::vector<Vec3> U = locator_.withHalo(ud().primitiveField());
+    // the gas in this rank's cells and its halo
+    const std::vector<Vec3> U = locator_.withHalo(U_.primitiveField());
     const std::vector<Vec3> gradP =
         locator_.withHalo(Foam::fvc::grad(p_)().primitiveField());
     const ExchangeResult ex = exchange_->compute
@@ -274,31 +273,13 @@ void DemCoupling::exchange(const VoidFractionResult& vf)
     guards_.checkParticles("fluid force", ex.totalForce, particles_);
 
     fields_.update(ex);
-    if (dragVelocity_ != "cellCentre") fields_.updateCorrection(U_, ud());
 
     // this rank's share; summed over ranks only when written
     fluidForce_ = ex.totalForce;
     dragForce_ = ex.dragForce;
     dem_->setFluidForces(fluidForce_);
     if (thermal_) thermal_->updateCoefficients(particles_, eps_, vf.map, ex);
-    fillMomentumRow(vf, ex, U);
-}
-
-
-Foam::tmp<Foam::volVectorField> DemCoupling::dragVelocity() const
-{
-    // dragVelocity (DemCoupling.H): on a collocated grid the cell-centred U
-    // departs from the fluxes' velocity where beta changes steeply from
-    // cell to cell (a packed bed's floor and surface layers)
-    if (dragVelocity_ == "cellCentre") return Foam::tmp<Foam::volVectorField>(U_);
-    if (dragVelocity_ == "flux")
-    {
-        return Foam::fvc::reconstruct(phi_)/Foam::max(voidfraction_, Foam::SMALL);
-    }
-    return Foam::fvc::reconstruct
-    (
-        phi_/Foam::max(Foam::fvc::interpolate(voidfraction_), Foam::SMALL)
-    );
+    fillMomentumRow(vf, ex);
 }
 
 
@@ -339,16 +320,17 @@ void DemCoupling::checkGas() const
 
 void DemCoupling::fillMomentumRow
 (
-    const VoidFractionResult& vf, const ExchangeResult& ex, const std::vector<Vec3>& u
+    const VoidFractionResult& vf, const ExchangeResult& ex
 )
 {
     double solid = 0;   // own cells: the halo's are the neighbours'
     for (label c = 0; c < locator_.nOwnedCells(); ++c) solid += vf.solidVolume[c];
     Vec3 drag, gas;
     for (const Vec3& f : ex.dragForce) drag += f;
-    forAll(U_, celli)   // the drag's u, own cells
+    forAll(U_, celli)
     {
-        gas += ex.beta[celli]*mesh_.V()[celli]*(u[celli] - ex.Us[celli]);
+        const Vec3& u = Vec3{U_[celli].x(), U_[celli].y(), U_[celli].z()};
+        gas += ex.beta[celli]*mesh_.V()[celli]*(u - ex.Us[celli]);
     }
     double sums[8] =
         {solid, drag.x, drag.y, drag.z, gas.x, gas.y, gas.z, double(particles_.size())};

@@ -65,51 +65,15 @@ void ExchangeFields::update(const ExchangeResult& ex)
 }
 
 
-void ExchangeFields::updateCorrection
-(
-    const Foam::volVectorField& U, const Foam::volVectorField& ud
-)
-{
-    if (!correction_)
-    {
-        correction_.reset
-        (
-            new Foam::volVectorField
-            (
-                Foam::IOobject("KslSlipCorrection", mesh_.time().timeName(), mesh_),
-                mesh_, Foam::dimensionedVector(Foam::dimDensity*Foam::dimAcceleration, Foam::Zero)
-            )
-        );
-    }
-    Foam::volVectorField& c = *correction_;
-    forAll(c, celli) c[celli] = Ksl_[celli]*(U[celli] - ud[celli]);
-    c.correctBoundaryConditions();
-}
-
-
-Foam::tmp<Foam::volVectorField> ExchangeFields::source() const
-{
-    if (!correction_) return Ksl_*Us_;
-    return Ksl_*Us_ + *correction_;
-}
-
-
 Vec3 ExchangeFields::gasMomentum(const Foam::volVectorField& U) const
 {
     // the momentum equation's exchange term Ksl (Us - U) is implicit in U,
-    // so what it took is this sum with the U it returned, less what the
-    // explicit part gave
+    // so what it took is this sum with the U it returned
     Vec3 received;
     forAll(Ksl_, celli)
     {
         const Foam::vector d = Ksl_[celli]*mesh_.V()[celli]*(U[celli] - Us_[celli]);
         received += Vec3{d.x(), d.y(), d.z()};
-    }
-    if (!correction_) return received;
-    forAll(Ksl_, celli)
-    {
-        const Foam::vector d = mesh_.V()[celli]*(*correction_)[celli];
-        received -= Vec3{d.x(), d.y(), d.z()};
     }
     return received;
 }
