@@ -327,20 +327,24 @@ Foam::tmp<Foam::volVectorField> DemCoupling::gradP() const
 
 void DemCoupling::setResistance(const Foam::volScalarField& resistance)
 {
+    // the owner's half is 1 - w of the way between the centres (w the
+    // linear weight), so its drop is R_o (1 - w) of R_o (1 - w) + R_n w
     const Foam::labelUList& owner = mesh_.owner();
     const Foam::labelUList& neighbour = mesh_.neighbour();
+    const Foam::surfaceScalarField& w = mesh_.weights();
     Foam::surfaceScalarField& share = *ownerShare_;
     forAll(owner, facei)
     {
-        const Foam::scalar ro = resistance[owner[facei]];
-        share[facei] = ro/(ro + resistance[neighbour[facei]]);
+        const Foam::scalar ro = resistance[owner[facei]]*(1 - w[facei]);
+        share[facei] = ro/(ro + resistance[neighbour[facei]]*w[facei]);
     }
     forAll(share.boundaryField(), patchi)
     {
         const Foam::fvPatchScalarField& rp = resistance.boundaryField()[patchi];
         if (!rp.coupled()) continue;
-        const Foam::scalarField ro(rp.patchInternalField());
-        share.boundaryFieldRef()[patchi] = ro/(ro + rp.patchNeighbourField());
+        const Foam::scalarField& wp = w.boundaryField()[patchi];
+        const Foam::scalarField ro(rp.patchInternalField()*(1 - wp));
+        share.boundaryFieldRef()[patchi] = ro/(ro + rp.patchNeighbourField()*wp);
     }
 }
 
