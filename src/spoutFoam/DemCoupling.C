@@ -115,6 +115,33 @@ void DemCoupling::readControls()
         );
     }
     deleteLost_ = (lost == "delete");
+    const Foam::word velocity = dict_.getOrDefault<Foam::word>("dragVelocity", "cellCentre");
+    if (velocity != "cellCentre" && velocity != "flux")
+    {
+        throw InputError
+        (
+            "constant/couplingProperties: key 'dragVelocity' expected 'cellCentre' "
+            "or 'flux', got '" + velocity + "'"
+        );
+    }
+    faceBalance_ = (velocity == "flux");
+    if (faceBalance_)
+    {
+        // the pressure gradient's face shares (gradP), written with the
+        // fields so that a restart continues with them; 1/2 at the start
+        ownerShare_.reset
+        (
+            new Foam::surfaceScalarField
+            (
+                Foam::IOobject
+                (
+                    "ownerShare", mesh_.time().timeName(), mesh_,
+                    Foam::IOobject::READ_IF_PRESENT, Foam::IOobject::AUTO_WRITE
+                ),
+                mesh_, Foam::dimensionedScalar("half", Foam::dimless, 0.5)
+            )
+        );
+    }
 }
 
 
@@ -253,8 +280,7 @@ void DemCoupling::exchange(const VoidFractionResult& vf)
 {
     // the gas in this rank's cells and its halo
     const std::vector<Vec3> U = locator_.withHalo(U_.primitiveField());
-    const std::vector<Vec3> gradP =
-        locator_.withHalo(Foam::fvc::grad(p_)().primitiveField());
+    const std::vector<Vec3> gradP = locator_.withHalo(this->gradP()().primitiveField());
     const ExchangeResult ex = exchange_->compute
     (
         locator_, particles_, vf, GasCellFields{U, gradP, eps_}, gas_, g_
@@ -270,6 +296,56 @@ void DemCoupling::exchange(const VoidFractionResult& vf)
     dem_->setFluidForces(fluidForce_);
     if (thermal_) thermal_->updateCoefficients(particles_, eps_, vf.map, ex);
     fillMomentumRow(vf, ex);
+}
+
+
+Foam::tmp<Foam::volVectorField> DemCoupling::gradP() const
+{
+    if (!ownerShare_) return Foam::fvc::grad(p_);
+    // face pressures where the series balance puts them: the owner's half
+    // takes the share R_o/(R_o + R_n) of the drop to the neighbour
+    Foam::surfaceScalarField pf(Foam::fvc::interpolate(p_));
+    const Foam::labelUList& owner = mesh_.owner();
+    const Foam::labelUList& neighbour = mesh_.neighbour();
+    const Foam::surfaceScalarField& share = *ownerShare_;
+    forAll(owner, facei)
+    {
+        const Foam::scalar po = p_[owner[facei]];
+        pf[facei] = po + share[facei]*(p_[neighbour[facei]] - po);
+    }
+    forAll(pf.boundaryField(), patchi)
+    {
+        const Foam::fvPatchScalarField& pp = p_.boundaryField()[patchi];
+        if (!pp.coupled()) continue;
+        const Foam::scalarField po(pp.patchInternalField());
+        pf.boundaryFieldRef()[patchi] =
+            po + share.boundaryField()[patchi]*(pp.patchNeighbourField() - po);
+    }
+    return Foam::fvc::surfaceIntegrate(mesh_.Sf()*pf);
+}
+
+
+void DemCoupling::setResistance(const Foam::volScalarField& resistance)
+{
+    // the owner's half is 1 - w of the way between the centres (w the
+    // linear weight), so its drop is R_o (1 - w) of R_o (1 - w) + R_n w
+    const Foam::labelUList& owner = mesh_.owner();
+    const Foam::labelUList& neighbour = mesh_.neighbour();
+    const Foam::surfaceScalarField& w = mesh_.weights();
+    Foam::surfaceScalarField& share = *ownerShare_;
+    forAll(owner, facei)
+    {
+        const Foam::scalar ro = resistance[owner[facei]]*(1 - w[facei]);
+        share[facei] = ro/(ro + resistance[neighbour[facei]]*w[facei]);
+    }
+    forAll(share.boundaryField(), patchi)
+    {
+        const Foam::fvPatchScalarField& rp = resistance.boundaryField()[patchi];
+        if (!rp.coupled()) continue;
+        const Foam::scalarField& wp = w.boundaryField()[patchi];
+        const Foam::scalarField ro(rp.patchInternalField()*(1 - wp));
+        share.boundaryFieldRef()[patchi] = ro/(ro + rp.patchNeighbourField()*wp);
+    }
 }
 
 

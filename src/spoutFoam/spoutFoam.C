@@ -20,6 +20,7 @@ Description
 #include "pisoControl.H"
 #include "fixedFluxPressureFvPatchScalarField.H"
 #include "uniformDimensionedFields.H"
+#include "reverseLinear.H"
 
 #include "DemCoupling.H"
 #include "InputError.hpp"

@@ -93,6 +93,7 @@ PACKED_BED = "re:^case\\.packedBed$"          # dP vs Ergun, mapped voidage vs t
 SETTLING = "re:^case\\.settlingParticle$"     # terminal velocity under Gidaspow (Wen-Yu)
 MIN_FLUIDISATION = "re:^case\\.minFluidisation$"  # bed lifted at u_mf: drag plus -V grad p
 FOAM = "re:^foam\\."                          # the divided model on real meshes
+EVERY_LAYER = "re:^case\\.packedBed\\.everyLayer$"  # every layer, floor and surface (dragVelocity flux)
 
 FAULTS = [
     Fault("beta x 1.1",
@@ -120,6 +121,13 @@ FAULTS = [
                 r"(std::pow\s*\(\s*eps\s*,\s*)-2\.65(\s*\))",
                 r"\g<1>-1.65\g<2>")],
           UNIT + [SETTLING], "Wen-Yu's voidage function eps^-1.65"),
+    Fault("drag from the cell-centre U",
+          [Edit("src/spoutFoam/pEqn.H",
+                r"fvc::reconstruct\s*\(\s*phi\s*\)\s*\(\s*\)\s*\.\s*primitiveField\s*\(\s*\)"
+                r"\s*/\s*max\s*\(\s*voidfraction\s*\.\s*primitiveField\s*\(\s*\)\s*,\s*SMALL\s*\)\s*;",
+                "(HbyA - rAU*voidfraction*fvc::grad(p))().primitiveField();")],
+          UNIT + [EVERY_LAYER],
+          "with dragVelocity flux the gas leaves its solve with the cell-centred U, which the drag then takes"),
     Fault("kinetics k5 x 1.05",
           [Edit("process_cases/kinetics/*mechanism*.yaml",
                 r"\{\s*id:\s*k5\s*,[^}\n]*?\bk:\s*(?P<value>[0-9.]+(?:[eE][-+]?[0-9]+)?)",
