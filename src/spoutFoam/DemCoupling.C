@@ -6,7 +6,7 @@
 #include "FoamParameters.H"
 #include "InputError.hpp"
 #include "LiggghtsStart.H"
-#include "SlabDecomposition.H"
+#include "BoxDecomposition.H"
 
 #include <algorithm>
 #include <cmath>
@@ -168,7 +168,7 @@ void DemCoupling::startDem()
         mesh_.time(), dict_, liggghtsInput_, MoistureCoupling::stateSize(dict_),
         CirculationCoupling::trackWidth(dict_)
     );
-    if (Foam::Pstream::parRun()) matchSlabs(mesh_, *dem_, locator_);
+    if (Foam::Pstream::parRun()) matchDecomposition(mesh_, *dem_, locator_);
     resumeStepState();
     Foam::Info<< "LIGGGHTS: " << dem_->nParticles() << " particles from "
         << liggghtsInput_.c_str() << ", DEM time step " << dem_->timeStep()

@@ -471,68 +471,103 @@ void cellBounds(const Foam::fvMesh& mesh, Foam::label c, Vec3& lo, Vec3& hi)
     }
 }
 
-// Send and receive one message with each neighbour (-1: none).
+// Send and receive one message with each neighbour.
 void swap
 (
-    const int rank[2], const std::vector<double> out[2], std::vector<double> in[2]
+    const std::vector<int>& rank, const std::vector<std::vector<double>>& out,
+    std::vector<std::vector<double>>& in
 )
 {
-    MPI_Request requests[4];
-    int n = 0;
-    for (int s = 0; s < 2; ++s)
+    std::vector<MPI_Request> requests(2*rank.size());
+    for (std::size_t s = 0; s < rank.size(); ++s)
     {
-        if (rank[s] < 0) continue;
         MPI_Irecv
         (
             in[s].data(), int(in[s].size()), MPI_DOUBLE, rank[s], 7101,
-            MPI_COMM_WORLD, &requests[n++]
+            MPI_COMM_WORLD, &requests[2*s]
         );
         MPI_Isend
         (
             const_cast<double*>(out[s].data()), int(out[s].size()), MPI_DOUBLE,
-            rank[s], 7101, MPI_COMM_WORLD, &requests[n++]
+            rank[s], 7101, MPI_COMM_WORLD, &requests[2*s + 1]
         );
     }
-    MPI_Waitall(n, requests, MPI_STATUSES_IGNORE);
+    MPI_Waitall(int(requests.size()), requests.data(), MPI_STATUSES_IGNORE);
+}
+
+
+// Whether an own cell lies within reach of the neighbouring box at offset
+// d (-1, 0, 1 along each axis) of this rank's box: of each plane shared
+// with it
+bool nearBox
+(
+    const ProcessorGrid& grid, const std::array<int, 3>& box,
+    const std::array<int, 3>& d, const Vec3& lo, const Vec3& hi, double reach
+)
+{
+    const double low[3] = {lo.x, lo.y, lo.z}, high[3] = {hi.x, hi.y, hi.z};
+    for (int a = 0; a < 3; ++a)
+    {
+        const std::vector<double>& cuts = grid.cuts[a];
+        if (d[a] < 0 && low[a] > cuts[std::size_t(box[a] - 1)] + reach) return false;
+        if (d[a] > 0 && high[a] < cuts[std::size_t(box[a])] - reach) return false;
+    }
+    return true;
 }
 
 } // namespace
 
 
-void FoamCellLocator::addHalo(const std::vector<double>& cuts, double reach)
+void FoamCellLocator::addHalo(const ProcessorGrid& grid, double reach)
 {
-    int rank = 0, nProcs = 1;
+    int rank = 0;
     MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-    MPI_Comm_size(MPI_COMM_WORLD, &nProcs);
-    sides_[0].rank = rank > 0 ? rank - 1 : -1;
-    sides_[1].rank = rank < nProcs - 1 ? rank + 1 : -1;
+    const std::array<int, 3>& box = grid.box[std::size_t(rank)];
 
-    // own cells within reach of the planes shared with each neighbour
+    // the boxes around this one (diagonal too), in rank order, and the own
+    // cells within reach of each
+    std::vector<std::array<int, 3>> offsets(std::size_t(grid.box.size()));
+    sides_.clear();
+    for (std::size_t r = 0; r < grid.box.size(); ++r)
+    {
+        bool next = int(r) != rank;
+        for (int a = 0; a < 3; ++a)
+        {
+            offsets[r][a] = grid.box[r][a] - box[a];
+            next = next && std::abs(offsets[r][a]) <= 1;
+        }
+        if (next) sides_.push_back(Side{int(r), {}, 0, 0});
+    }
     for (Foam::label c = 0; c < mesh_.nCells(); ++c)
     {
         Vec3 lo, hi;
         cellBounds(mesh_, c, lo, hi);
-        if (sides_[0].rank >= 0 && lo.x <= cuts[rank] + reach) sides_[0].sent.push_back(c);
-        if (sides_[1].rank >= 0 && hi.x >= cuts[rank + 1] - reach) sides_[1].sent.push_back(c);
+        for (Side& side : sides_)
+        {
+            const std::array<int, 3>& d = offsets[std::size_t(side.rank)];
+            if (nearBox(grid, box, d, lo, hi, reach)) side.sent.push_back(c);
+        }
     }
 
     // their geometry both ways: first the sizes, then the cells
-    std::vector<double> out[2], in[2], sizesOut[2], sizesIn[2];
-    const int ranks[2] = {sides_[0].rank, sides_[1].rank};
-    for (int s = 0; s < 2; ++s)
+    const std::size_t n = sides_.size();
+    std::vector<std::vector<double>> out(n), in(n), sizesOut(n), sizesIn(n);
+    std::vector<int> ranks(n);
+    for (std::size_t s = 0; s < n; ++s)
     {
+        ranks[s] = sides_[s].rank;
         out[s] = packedCells(sides_[s].sent);
         sizesOut[s] = {double(out[s].size()), double(sides_[s].sent.size())};
         sizesIn[s].assign(2, 0.0);
     }
     swap(ranks, sizesOut, sizesIn);
-    for (int s = 0; s < 2; ++s) in[s].resize(std::size_t(sizesIn[s][0]));
+    for (std::size_t s = 0; s < n; ++s) in[s].resize(std::size_t(sizesIn[s][0]));
     swap(ranks, out, in);
 
     // append the received cells after our own, side by side
     haloBbMin_ = Vec3{1e300, 1e300, 1e300};
     haloBbMax_ = Vec3{-1e300, -1e300, -1e300};
-    for (int s = 0; s < 2; ++s)
+    for (std::size_t s = 0; s < n; ++s)
     {
         sides_[s].haloStart = haloVolume_.size();
         sides_[s].haloSize = std::size_t(sizesIn[s][1]);
@@ -596,11 +631,13 @@ void FoamCellLocator::exchange
 ) const
 {
     const std::size_t w = std::size_t(width), nOwned = std::size_t(mesh_.nCells());
-    std::vector<double> out[2], in[2];
-    const int ranks[2] = {sides_[0].rank, sides_[1].rank};
-    for (int s = 0; s < 2; ++s)
+    const std::size_t n = sides_.size();
+    std::vector<std::vector<double>> out(n), in(n);
+    std::vector<int> ranks(n);
+    for (std::size_t s = 0; s < n; ++s)
     {
         const Side& side = sides_[s];
+        ranks[s] = side.rank;
         if (reverse)
         {
             // our halo cells' shares go to their owner
@@ -618,13 +655,12 @@ void FoamCellLocator::exchange
         }
     }
     swap(ranks, out, in);
-    for (int s = 0; s < 2; ++s)
+    for (std::size_t s = 0; s < n; ++s)
     {
-        if (ranks[s] < 0) continue;
         traffic_.messages += 1;
         traffic_.bytes += double(out[s].size()*sizeof(double));
     }
-    for (int s = 0; s < 2; ++s)
+    for (std::size_t s = 0; s < n; ++s)
     {
         const Side& side = sides_[s];
         if (reverse)
@@ -647,7 +683,7 @@ void FoamCellLocator::exchange
 
 void FoamCellLocator::complete(std::vector<double>& values, int width) const
 {
-    if (sides_[0].rank < 0 && sides_[1].rank < 0) return;
+    if (sides_.empty()) return;
     exchange(values, width, true);
     exchange(values, width, false);
 }
@@ -657,7 +693,7 @@ std::vector<double> FoamCellLocator::withHalo(const Foam::scalarField& field) co
 {
     std::vector<double> values(static_cast<std::size_t>(nCells()), 0.0);
     std::copy(field.begin(), field.end(), values.begin());
-    if (sides_[0].rank >= 0 || sides_[1].rank >= 0) exchange(values, 1, false);
+    if (!sides_.empty()) exchange(values, 1, false);
     return values;
 }
 
@@ -671,7 +707,7 @@ std::vector<Vec3> FoamCellLocator::withHalo(const Foam::vectorField& field) cons
         flat[3*i + 1] = field[i].y();
         flat[3*i + 2] = field[i].z();
     }
-    if (sides_[0].rank >= 0 || sides_[1].rank >= 0) exchange(flat, 3, false);
+    if (!sides_.empty()) exchange(flat, 3, false);
     std::vector<Vec3> values(flat.size()/3);
     for (std::size_t i = 0; i < values.size(); ++i)
     {

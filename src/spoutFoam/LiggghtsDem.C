@@ -13,6 +13,7 @@
 #include "fix_property_atom.h"
 #include "fix_property_global.h"
 #include "input.h"
+#include "irregular.h"
 #include "lammps.h"
 #include "modify.h"
 #include "neighbor.h"
@@ -137,6 +138,9 @@ LiggghtsDem::LiggghtsDem
     findHeatFixes(inputFile);
     if (moistureState >= 0) declareMoisture(inputFile, moistureState);
     if (circulationTrack > 0) declareCirculationTrack(circulationTrack);
+    int nProcs = 1;
+    MPI_Comm_size(comm_, &nProcs);
+    if (nProcs == 1)
     {
         Activity doing("setting up the DEM run");
         setup();
@@ -720,32 +724,82 @@ void LiggghtsDem::command(const std::string& cmd)
 }
 
 
-void LiggghtsDem::setSlabs(const std::vector<double>& cuts)
+bool LiggghtsDem::onGrid(const ProcessorGrid& grid) const
 {
+    const auto* comm = lmp_->comm;
+    int me = 0;
+    MPI_Comm_rank(comm_, &me);
+    int same = 1;
+    for (int a = 0; a < 3; ++a)
+    {
+        same = same && comm->procgrid[a] == grid.n[a]
+            && comm->myloc[a] == grid.box[std::size_t(me)][a];
+    }
+    MPI_Allreduce(MPI_IN_PLACE, &same, 1, MPI_INT, MPI_MIN, comm_);
+    return same == 1;
+}
+
+
+void LiggghtsDem::regrid(const ProcessorGrid& grid)
+{
+    // LIGGGHTS' own grid of that shape (its arrays and splits), then each
+    // rank's place and neighbours taken from the mesh's boxes, as
+    // LIGGGHTS' map would have put them (its neighbours wrap around)
+    auto* comm = lmp_->comm;
+    for (int a = 0; a < 3; ++a) comm->user_procgrid[a] = grid.n[a];
+    comm->set_proc_grid(0);
+    int me = 0;
+    MPI_Comm_rank(comm_, &me);
+    for (int i = 0; i < grid.n[0]; ++i)
+    {
+        for (int j = 0; j < grid.n[1]; ++j)
+        {
+            for (int k = 0; k < grid.n[2]; ++k)
+            {
+                comm->grid2proc[i][j][k] = grid.rankAt({{i, j, k}});
+            }
+        }
+    }
+    const std::array<int, 3>& mine = grid.box[std::size_t(me)];
+    for (int a = 0; a < 3; ++a)
+    {
+        comm->myloc[a] = mine[a];
+        for (int side = 0; side < 2; ++side)
+        {
+            std::array<int, 3> next = mine;
+            next[a] = (mine[a] + (side ? 1 : -1) + grid.n[a]) % grid.n[a];
+            comm->procneigh[a][side] = grid.rankAt(next);
+        }
+    }
+}
+
+
+void LiggghtsDem::setDecomposition(const ProcessorGrid& grid)
+{
+    Activity doing("setting up the DEM run");
     auto* comm = lmp_->comm;
     auto* domain = lmp_->domain;
-    int nProcs = 1;
-    MPI_Comm_size(comm_, &nProcs);
-    if
-    (
-        comm->procgrid[0] != nProcs || comm->procgrid[1] != 1
-     || comm->procgrid[2] != 1 || int(cuts.size()) != nProcs + 1
-    )
+    const bool moved = !onGrid(grid);
+    if (moved) regrid(grid);
+    else setup();   // on LIGGGHTS' own cuts first, as before boxes
+    double* split[3] = {comm->xsplit, comm->ysplit, comm->zsplit};
+    for (int a = 0; a < 3; ++a)
     {
-        throw InputError
-        (
-            "LIGGGHTS input: a parallel coupled run expects 'processors * 1 1' "
-            "(the gas mesh is split into x-slabs), got a "
-          + std::to_string(comm->procgrid[0]) + " x "
-          + std::to_string(comm->procgrid[1]) + " x "
-          + std::to_string(comm->procgrid[2]) + " processor grid"
-        );
+        for (int k = 1; k < grid.n[a]; ++k)
+        {
+            split[a][k] = (grid.cuts[a][std::size_t(k - 1)] - domain->boxlo[a])/domain->prd[a];
+        }
     }
-    for (int r = 1; r < nProcs; ++r)
-    {
-        comm->xsplit[r] = (cuts[r] - domain->boxlo[0])/domain->xprd;
-    }
+    comm->uniform = 0;   // the ghost and migration searches use the splits
     domain->set_local_box();
+    if (moved)
+    {
+        // atoms may lie any number of boxes away from their new owner; the
+        // fixes that move with them (contact history) need their init first
+        lmp_->init();
+        LAMMPS_NS::Irregular irregular(lmp_);
+        irregular.migrate_atoms();
+    }
     setup();   // its exchange moves the atoms to their new subdomains
 }
 
