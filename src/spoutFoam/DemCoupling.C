@@ -32,6 +32,28 @@ Vec3 sumOverRanks(const Vec3& v)
 }
 
 
+// couplingProperties' word `key` (`first` when absent), one of first, second
+bool isSecond
+(
+    const Foam::dictionary& dict,
+    const std::string& key,
+    const std::string& first,
+    const std::string& second
+)
+{
+    const Foam::word value = dict.getOrDefault<Foam::word>(key, first);
+    if (value != first && value != second)
+    {
+        throw InputError
+        (
+            "constant/couplingProperties: key '" + key + "' expected '" + first
+          + "' or '" + second + "', got '" + value + "'"
+        );
+    }
+    return value == second;
+}
+
+
 } // namespace
 
 
@@ -105,26 +127,8 @@ void DemCoupling::readControls()
             "positive number of DEM steps per CFD step"
         );
     }
-    const Foam::word lost = dict_.getOrDefault<Foam::word>("lostParticles", "stop");
-    if (lost != "stop" && lost != "delete")
-    {
-        throw InputError
-        (
-            "constant/couplingProperties: key 'lostParticles' expected 'stop' "
-            "or 'delete', got '" + lost + "'"
-        );
-    }
-    deleteLost_ = (lost == "delete");
-    const Foam::word velocity = dict_.getOrDefault<Foam::word>("dragVelocity", "cellCentre");
-    if (velocity != "cellCentre" && velocity != "flux")
-    {
-        throw InputError
-        (
-            "constant/couplingProperties: key 'dragVelocity' expected 'cellCentre' "
-            "or 'flux', got '" + velocity + "'"
-        );
-    }
-    faceBalance_ = (velocity == "flux");
+    deleteLost_ = isSecond(dict_, "lostParticles", "stop", "delete");
+    faceBalance_ = isSecond(dict_, "dragVelocity", "cellCentre", "flux");
     if (faceBalance_)
     {
         // the pressure gradient's face shares (gradP), written with the

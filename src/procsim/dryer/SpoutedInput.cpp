@@ -60,15 +60,12 @@ spoutlab::Parameters props(const YamlInput& in, const std::string& key)
     return p;
 }
 
-Residence readResidence(const YamlInput& r)
+// r's list `counts` into res.counts (each an integer >= 0); their sum
+long readCounts(const YamlInput& r, Residence& res)
 {
-    Residence res;
-    res.binWidth = r.within("binWidth", 1e-9, 1e6, "s");
-    if (!(res.binWidth > 0)) throw r.error("binWidth", "a positive bin width [s]");
     const YAML::Node n = r.node()["counts"];
-    if (!n || !n.IsSequence() || n.size() == 0) throw r.error("counts", "a non-empty list of counts");
     long sum = 0;
-    for (std::size_t i = 0; i < n.size(); ++i)
+    for (std::size_t i = 0; n && n.IsSequence() && i < n.size(); ++i)
     {
         const auto v = n[i].IsScalar() ? parseInteger(n[i].Scalar(), 0, 2000000000L) : std::nullopt;
         if (!v)
@@ -77,6 +74,17 @@ Residence readResidence(const YamlInput& r)
         res.counts.push_back(static_cast<double>(*v));
         sum += *v;
     }
+    return sum;
+}
+
+Residence readResidence(const YamlInput& r)
+{
+    Residence res;
+    res.binWidth = r.within("binWidth", 1e-9, 1e6, "s");
+    if (!(res.binWidth > 0)) throw r.error("binWidth", "a positive bin width [s]");
+    const YAML::Node n = r.node()["counts"];
+    if (!n || !n.IsSequence() || n.size() == 0) throw r.error("counts", "a non-empty list of counts");
+    const long sum = readCounts(r, res);
     res.samples = r.integer("samples", 0, 2000000000L);
     res.mean = r.within("mean", 0, 1e6, "s");
     res.std = r.within("std", 0, 1e6, "s");
@@ -122,21 +130,12 @@ Residence readVisitFractions(const YamlInput& f)
     if (std::fabs(bins * res.binWidth - 1) > 1e-9)
         throw f.error("counts",
                       "1/binWidth = " + formatNumber(1 / res.binWidth) + " counts (bins over [0, 1])");
-    double sum = 0;
-    for (std::size_t i = 0; i < n.size(); ++i)
-    {
-        const auto v = n[i].IsScalar() ? parseInteger(n[i].Scalar(), 0, 2000000000L) : std::nullopt;
-        if (!v)
-            throw InputError(f.file() + ": key '" + f.path() + ".counts[" + std::to_string(i)
-                             + "]' expected a count (an integer >= 0)");
-        res.counts.push_back(static_cast<double>(*v));
-        sum += static_cast<double>(*v);
-    }
+    const long sum = readCounts(f, res);
     if (sum < kMinResidences)
         throw f.error("counts",
                       "at least " + std::to_string(kMinResidences)
                           + " visits: too few cycles for a distribution; average over a longer run");
-    res.samples = static_cast<long>(sum);
+    res.samples = sum;
     res.mean = res.histogramMean();
     return res;
 }
