@@ -258,9 +258,12 @@ void CirculationCoupling::findJetFaces()
         return std::fabs(Sf[f].x()) >= 0.99*Foam::mag(Sf[f]) && Cf[f].z() < r.He()
             && std::fabs(std::fabs(Cf[f].x()) - 0.5*r.Wd()) < 1e-6*r.Wd();
     };
+    const Foam::labelList& owner = mesh_.faceOwner();
     for (Foam::label f = 0; f < mesh_.nInternalFaces(); ++f)
     {
-        if (onSide(f)) jetFaces_.push_back({f, -1, -1});
+        // the normal points from the owner: outward when the owner is in the jet
+        const double outward = std::fabs(C[owner[f]].x()) < 0.5*r.Wd() ? 1.0 : -1.0;
+        if (onSide(f)) jetFaces_.push_back({f, -1, -1, outward});
     }
     forAll(mesh_.boundaryMesh(), patchi)
     {
@@ -271,7 +274,7 @@ void CirculationCoupling::findJetFaces()
             const Foam::label cell = pp.faceCells()[i];
             if (onSide(pp.start() + i) && std::fabs(C[cell].x()) < 0.5*r.Wd())
             {
-                jetFaces_.push_back({pp.start() + i, patchi, i});
+                jetFaces_.push_back({pp.start() + i, patchi, i, 1.0});
             }
         }
     }
@@ -292,14 +295,10 @@ void CirculationCoupling::sampleGas()
     gas_[1] += rho_*up[0];
     gas_[2] += rho_*up[1];
     // out of the jet and into it across its sides, each time's own sign
-    const Foam::volVectorField& C = mesh_.C();
-    const Foam::labelList& owner = mesh_.faceOwner();
     for (const JetFace& j : jetFaces_)
     {
         const double flux = j.patch < 0 ? phi_[j.face] : phi_.boundaryField()[j.patch][j.local];
-        // outward: along the normal when the owner (or the patch's cell) is in the jet
-        const bool ownerInJet = std::fabs(C[owner[j.face]].x()) < 0.5*stats_.regions().Wd();
-        const double out = ownerInJet ? flux : -flux;
+        const double out = j.outward*flux;
         gas_[out > 0 ? 3 : 4] += rho_*std::fabs(out);
     }
 }
