@@ -91,10 +91,10 @@ void CirculationStatistics::enter(double t, int state, double* track)
     if (track[1] >= 0)
     {
         addResidence(left, t - track[1], t);
-        if (left == entrainmentRegion && track[4] > 0)
+        if (coreOf(left) >= 0 && track[4] > 0)
         {
-            const auto bin = std::min(int(track[3] / track[4] * nJetFractionBins), nJetFractionBins - 1);
-            jetFractions_[std::size_t(bin)] += 1;
+            const auto bin = std::min(int(track[3] / track[4] * nCoreFractionBins), nCoreFractionBins - 1);
+            cores_[std::size_t(coreOf(left))].fractions[std::size_t(bin)] += 1;
         }
     }
     else
@@ -137,10 +137,11 @@ void CirculationStatistics::observe(double t, const Vec3& x, double* track, cons
                                               seen.Tgas,    seen.Y,      seen.Tparticle};
     for (int q = 0; q < nSampleQuantities; ++q) seen_[s][std::size_t(q)] += values[q];
     track[4] += 1;
-    if (state != entrainmentRegion || !regions_.inJet(x.x, x.z)) return;
+    if (!regions_.inCore(state, x.x, x.z)) return;
     track[3] += 1;
-    jetOccupancy_ += 1;
-    for (int q = 0; q < nSampleQuantities; ++q) jetSeen_[std::size_t(q)] += values[q];
+    Core& core = cores_[std::size_t(coreOf(state))];
+    core.occupancy += 1;
+    for (int q = 0; q < nSampleQuantities; ++q) core.seen[std::size_t(q)] += values[q];
 }
 
 void CirculationStatistics::endSample(double t)
@@ -159,14 +160,16 @@ double CirculationStatistics::meanSeen(int state, int quantity) const
     return n > 0 ? seen_[std::size_t(state)][std::size_t(quantity)] / n : 0.0;
 }
 
-double CirculationStatistics::jetHoldup() const
+double CirculationStatistics::coreHoldup(int state) const
 {
-    return sampleTimes_ > 0 ? jetOccupancy_ / sampleTimes_ : 0.0;
+    const double n = cores_[std::size_t(coreOf(state))].occupancy;
+    return sampleTimes_ > 0 ? n / sampleTimes_ : 0.0;
 }
 
-double CirculationStatistics::meanSeenInJet(int quantity) const
+double CirculationStatistics::meanSeenInCore(int state, int quantity) const
 {
-    return jetOccupancy_ > 0 ? jetSeen_[std::size_t(quantity)] / jetOccupancy_ : 0.0;
+    const Core& core = cores_[std::size_t(coreOf(state))];
+    return core.occupancy > 0 ? core.seen[std::size_t(quantity)] / core.occupancy : 0.0;
 }
 
 std::array<double, nCirculationRegions> CirculationStatistics::openAtEnd(const std::vector<double*>& tracks,
@@ -183,7 +186,7 @@ std::array<double, nCirculationRegions> CirculationStatistics::openAtEnd(const s
 }
 
 // Layout: sampleTimes, skipped, entries[4], occupancy[4], openStart[4], seen[4][7],
-// jetOccupancy, jetSeen[7], jetFractions[20], per
+// per core (entrainment's, fountain's) occupancy, seen[7], fractions[20], per
 // distribution (5) the moments all, first, second (3 each), then the number
 // of bins n and the 5 histograms of n bins each.
 std::size_t CirculationStatistics::bins() const
@@ -200,9 +203,12 @@ std::vector<double> CirculationStatistics::pack(std::size_t minBins, bool counts
     p.insert(p.end(), occupancy_.begin(), occupancy_.end());
     p.insert(p.end(), openStart_.begin(), openStart_.end());
     for (const auto& row : seen_) p.insert(p.end(), row.begin(), row.end());
-    p.push_back(jetOccupancy_);
-    p.insert(p.end(), jetSeen_.begin(), jetSeen_.end());
-    p.insert(p.end(), jetFractions_.begin(), jetFractions_.end());
+    for (const Core& core : cores_)
+    {
+        p.push_back(core.occupancy);
+        p.insert(p.end(), core.seen.begin(), core.seen.end());
+        p.insert(p.end(), core.fractions.begin(), core.fractions.end());
+    }
     const std::size_t bins = std::max(minBins, this->bins());
     for (const ResidenceDistribution& d : residence_)
     {
@@ -223,8 +229,10 @@ namespace
 {
 
 constexpr std::size_t fixedPackSize =
-    2 + 3 * nCirculationRegions + (nCirculationRegions + 1) * nSampleQuantities + 1
-    + CirculationStatistics::nJetFractionBins + (nCirculationRegions + 1) * 9;
+    2 + 3 * nCirculationRegions + nCirculationRegions * nSampleQuantities
+    + CirculationStatistics::coreStates.size()
+          * (1 + nSampleQuantities + CirculationStatistics::nCoreFractionBins)
+    + (nCirculationRegions + 1) * 9;
 
 } // namespace
 
@@ -250,9 +258,12 @@ void CirculationStatistics::add(const std::vector<double>& packed)
     {
         for (double& v : row) v += packed[k++];
     }
-    jetOccupancy_ += packed[k++];
-    for (double& v : jetSeen_) v += packed[k++];
-    for (double& v : jetFractions_) v += packed[k++];
+    for (Core& core : cores_)
+    {
+        core.occupancy += packed[k++];
+        for (double& v : core.seen) v += packed[k++];
+        for (double& v : core.fractions) v += packed[k++];
+    }
     for (ResidenceDistribution& d : residence_)
     {
         for (Moments* m : {&d.all, &d.halves[0], &d.halves[1]})
@@ -277,9 +288,7 @@ void CirculationStatistics::clear()
     occupancy_ = {};
     openStart_ = {};
     seen_ = {};
-    jetOccupancy_ = 0;
-    jetSeen_ = {};
-    jetFractions_ = {};
+    cores_ = {};
     sampleTimes_ = 0;
     skipped_ = 0;
 }

@@ -9,10 +9,14 @@
 //   downcomer    |x| >= Wd/2 + plateThickness, He <= z < Hd
 //   entrainment  z < He (at any x)
 // and none inside a plate (Wd/2 < |x| < Wd/2 + plateThickness, He <= z < Hd),
-// where no particle can be. The jet is the part of the entrainment zone under
-// the spout, |x| <= Wd/2 and z < He: the inlet gas rises through it hot and
-// dry, while beside it the kernels sliding off the downcomers meet the little
-// gas that seeps towards them (the gas's compartments, not a particle state).
+// where no particle can be. Two states hold two gases each, one in the
+// state's core over or under the spout (|x| <= Wd/2) and one beside it (the
+// gas's compartments, not particle states): the jet is the entrainment
+// state's core, z < He, where the inlet gas rises hot and dry, while beside
+// it the kernels sliding off the downcomers meet the little gas that seeps
+// towards them; the fountain's core is the spout's gas rising above the
+// plates (and a fountain particle fallen back into the spout), beside it the
+// gas that seeped up the downcomers.
 //
 // A particle's state advances only in the cycle order
 //   spout -> fountain -> downcomer -> entrainment -> spout:
@@ -29,11 +33,11 @@
 // into restarts): the state (-1 before the particle is first seen), the time
 // it entered the state (-1: an incomplete visit), the time of its last
 // entry into the spout (-1: none yet), and the samples of the visit so far,
-// all and those in the jet. An incomplete visit keeps the time t it was
-// first seen as -1 - t. Each completed visit of the entrainment state adds
-// the share of its samples found in the jet to a histogram (jetFractions,
-// bins of 1/nJetFractionBins): how much of its time in the zone a kernel
-// spends in the jet varies from visit to visit.
+// all and those in its state's core. An incomplete visit keeps the time t it
+// was first seen as -1 - t. Each completed visit of a state with a core adds
+// the share of its samples found in the core to that core's histogram
+// (coreFractions, bins of 1/nCoreFractionBins): how much of its time in the
+// zone a kernel spends in the core varies from visit to visit.
 //
 // Little's law over the finite window, with its boundary terms, holds exactly
 // per state: holdup x window = the completed residences + the time of the
@@ -87,6 +91,13 @@ public:
 
     int region(double x, double z) const;
     bool inJet(double x, double z) const { return z < He_ && std::fabs(x) <= 0.5 * Wd_; }
+    // a particle of `state` at (x, z) in that state's core (the jet, the
+    // fountain's core); false for the states without one
+    bool inCore(int state, double x, double z) const
+    {
+        return state == entrainmentRegion ? inJet(x, z)
+                                          : state == fountainRegion && std::fabs(x) <= 0.5 * Wd_;
+    }
 
     double Wd() const { return Wd_; }
     double He() const { return He_; }
@@ -130,7 +141,14 @@ class CirculationStatistics
 {
 public:
     static constexpr int trackWidth = 5;
-    static constexpr int nJetFractionBins = 20;
+    static constexpr int nCoreFractionBins = 20;
+    // the states with a core, in the order of the core index
+    static constexpr std::array<int, 2> coreStates = {entrainmentRegion, fountainRegion};
+    // a state's core index, -1 without a core
+    static constexpr int coreOf(int state)
+    {
+        return state == entrainmentRegion ? 0 : state == fountainRegion ? 1 : -1;
+    }
     static constexpr int cycle = nCirculationRegions; // index of the cycle's distribution
 
     // averageStart: tracking and sums start at samples t >= averageStart;
@@ -158,12 +176,15 @@ public:
     // mean of a ParticleSample quantity (0..nSampleQuantities-1, in the
     // struct's order) over the samples in the state; 0 without samples
     double meanSeen(int state, int quantity) const;
-    // the same over the samples of the entrainment state found in the jet
-    double jetHoldup() const;
-    double meanSeenInJet(int quantity) const;
-    // completed entrainment visits by the share of their samples in the jet
-    // (bin i: [i, i + 1) / nJetFractionBins, the last closed)
-    const std::array<double, nJetFractionBins>& jetFractions() const { return jetFractions_; }
+    // the same over the samples of a state (with a core) found in its core
+    double coreHoldup(int state) const;
+    double meanSeenInCore(int state, int quantity) const;
+    // its completed visits by the share of their samples in the core
+    // (bin i: [i, i + 1) / nCoreFractionBins, the last closed)
+    const std::array<double, nCoreFractionBins>& coreFractions(int state) const
+    {
+        return cores_[std::size_t(coreOf(state))].fractions;
+    }
     // samples of particles found in the region two steps ahead of their state
     // (a skipped region: the sampling was too coarse), over all states
     double skippedSamples() const { return skipped_; }
@@ -193,9 +214,13 @@ private:
     std::array<double, nCirculationRegions> occupancy_{}; // particle samples per state
     std::array<double, nCirculationRegions> openStart_{};
     std::array<std::array<double, nSampleQuantities>, nCirculationRegions> seen_{};
-    double jetOccupancy_ = 0;
-    std::array<double, nSampleQuantities> jetSeen_{};
-    std::array<double, nJetFractionBins> jetFractions_{};
+    struct Core
+    {
+        double occupancy = 0;
+        std::array<double, nSampleQuantities> seen{};
+        std::array<double, nCoreFractionBins> fractions{};
+    };
+    std::array<Core, coreStates.size()> cores_{};
     double sampleTimes_ = 0;
     double skipped_ = 0;
 

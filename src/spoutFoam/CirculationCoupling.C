@@ -24,7 +24,7 @@ namespace
 const std::string file = "constant/couplingProperties";
 
 // gas_, maxStep_, firstSample_, lastSample_ after the statistics' own
-constexpr int nGas = 5;
+constexpr int nGas = 7;
 constexpr int extraWidth = nGas + 3;
 
 
@@ -241,29 +241,35 @@ void CirculationCoupling::findGasFaces()
         if (ax < 0.5*r.Wd()) spoutFaces_.push_back(f);
         else if (ax > 0.5*r.Wd() + r.plateThickness()) downcomerFaces_.push_back(f);
     }
-    findJetFaces();
+    findCoreFaces();
 }
 
 
-void CirculationCoupling::findJetFaces()
+void CirculationCoupling::findCoreFaces()
 {
-    // the vertical faces at |x| = Wd/2 below He, internal or on a processor
-    // patch (there counted by the rank whose cell is in the jet)
+    // the vertical faces at |x| = Wd/2 along each core, the jet's below He,
+    // the fountain core's above Hd, internal or on a processor patch (there
+    // counted by the rank whose cell is in the core)
     const DraftPlateRegions& r = stats_.regions();
     const Foam::vectorField& Cf = mesh_.faceCentres();
     const Foam::vectorField& Sf = mesh_.faceAreas();
     const Foam::volVectorField& C = mesh_.C();
-    const auto onSide = [&](Foam::label f)
+    const auto side = [&](Foam::label f)
     {
-        return std::fabs(Sf[f].x()) >= 0.99*Foam::mag(Sf[f]) && Cf[f].z() < r.He()
-            && std::fabs(std::fabs(Cf[f].x()) - 0.5*r.Wd()) < 1e-6*r.Wd();
+        if (std::fabs(Sf[f].x()) < 0.99*Foam::mag(Sf[f])
+         || std::fabs(std::fabs(Cf[f].x()) - 0.5*r.Wd()) >= 1e-6*r.Wd())
+        {
+            return -1;
+        }
+        return Cf[f].z() < r.He() ? 0 : Cf[f].z() > r.Hd() ? 1 : -1;
     };
+    const auto inside = [&](Foam::label cell) { return std::fabs(C[cell].x()) < 0.5*r.Wd(); };
     const Foam::labelList& owner = mesh_.faceOwner();
     for (Foam::label f = 0; f < mesh_.nInternalFaces(); ++f)
     {
-        // the normal points from the owner: outward when the owner is in the jet
-        const double outward = std::fabs(C[owner[f]].x()) < 0.5*r.Wd() ? 1.0 : -1.0;
-        if (onSide(f)) jetFaces_.push_back({f, -1, -1, outward});
+        // the normal points from the owner: outward when the owner is inside
+        const int core = side(f);
+        if (core >= 0) coreFaces_[core].push_back({f, -1, -1, inside(owner[f]) ? 1.0 : -1.0});
     }
     forAll(mesh_.boundaryMesh(), patchi)
     {
@@ -271,10 +277,10 @@ void CirculationCoupling::findJetFaces()
         if (!pp.coupled()) continue;
         forAll(pp, i)
         {
-            const Foam::label cell = pp.faceCells()[i];
-            if (onSide(pp.start() + i) && std::fabs(C[cell].x()) < 0.5*r.Wd())
+            const int core = side(pp.start() + i);
+            if (core >= 0 && inside(pp.faceCells()[i]))
             {
-                jetFaces_.push_back({pp.start() + i, patchi, i, 1.0});
+                coreFaces_[core].push_back({pp.start() + i, patchi, i, 1.0});
             }
         }
     }
@@ -294,12 +300,15 @@ void CirculationCoupling::sampleGas()
     gas_[0] += rho_*in;
     gas_[1] += rho_*up[0];
     gas_[2] += rho_*up[1];
-    // out of the jet and into it across its sides, each time's own sign
-    for (const JetFace& j : jetFaces_)
+    // out of each core and into it across its sides, each time's own sign
+    for (std::size_t core = 0; core < coreFaces_.size(); ++core)
     {
-        const double flux = j.patch < 0 ? phi_[j.face] : phi_.boundaryField()[j.patch][j.local];
-        const double out = j.outward*flux;
-        gas_[out > 0 ? 3 : 4] += rho_*std::fabs(out);
+        for (const CoreFace& c : coreFaces_[core])
+        {
+            const double flux = c.patch < 0 ? phi_[c.face] : phi_.boundaryField()[c.patch][c.local];
+            const double out = c.outward*flux;
+            gas_[3 + 2*core + (out > 0 ? 0 : 1)] += rho_*std::fabs(out);
+        }
     }
 }
 
@@ -584,17 +593,17 @@ std::string CirculationCoupling::conditionsJson() const
             + ", \"occupancy\": " + number(stats_.holdup(s)*window) + ", \"completed\": "
             + number(stats_.residence(s).all.sum) + ", \"openAtStart\": "
             + number(stats_.openAtStart(s)) + ", \"openAtEnd\": " + number(openEnd_[s]);
-        if (s == entrainmentRegion)
+        if (CirculationStatistics::coreOf(s) >= 0)
         {
             std::string counts;
-            for (const double n : stats_.jetFractions())
+            for (const double n : stats_.coreFractions(s))
             {
                 counts += (counts.empty() ? "" : ", ") + number(n);
             }
-            j += ",\n      \"jet\": {"
-                + seenJson(stats_.jetHoldup(), [&](int q) { return stats_.meanSeenInJet(q); })
+            j += std::string(",\n      \"") + (s == entrainmentRegion ? "jet" : "core") + "\": {"
+                + seenJson(stats_.coreHoldup(s), [&](int q) { return stats_.meanSeenInCore(s, q); })
                 + ",\n        \"visitFractions\": {\"binWidth\": "
-                + number(1.0/CirculationStatistics::nJetFractionBins) + ", \"counts\": ["
+                + number(1.0/CirculationStatistics::nCoreFractionBins) + ", \"counts\": ["
                 + counts + "]}}";
         }
         j += "}";
@@ -616,7 +625,9 @@ void CirculationCoupling::writeJson(const CirculationRun& run) const
       << number(in) << ", \"height\": " << number(gasHeight_) << ", \"spoutShare\": "
       << number(share(gas_[1])) << ", \"downcomerShare\": "
       << number(share(gas_[2])) << ", \"outOfJet\": " << number(share(gas_[3]))
-      << ", \"intoJet\": " << number(share(gas_[4])) << "},\n  \"circulationRate\": "
+      << ", \"intoJet\": " << number(share(gas_[4])) << ",\n    \"outOfFountainCore\": "
+      << number(share(gas_[5])) << ", \"intoFountainCore\": " << number(share(gas_[6]))
+      << "},\n  \"circulationRate\": "
       << number(stats_.entries(spoutRegion)/window*run.mass) << "\n}\n";
     const std::string path = mesh_.time().globalPath()/"circulation.json";
     {

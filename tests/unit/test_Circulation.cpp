@@ -321,8 +321,8 @@ TEST(CirculationStatistics, JetIsTheEntrainmentStateUnderTheSpout)
     stats.observe(0.1, inEntrainment, fallen.data(), cool); // spout state still
     stats.endSample(0.1);
     EXPECT_NEAR(stats.holdup(entrainmentRegion), 2.0, 1e-15);
-    EXPECT_NEAR(stats.jetHoldup(), 1.5, 1e-15);
-    EXPECT_NEAR(stats.meanSeenInJet(4), 420.0, 1e-12);
+    EXPECT_NEAR(stats.coreHoldup(entrainmentRegion), 1.5, 1e-15);
+    EXPECT_NEAR(stats.meanSeenInCore(entrainmentRegion, 4), 420.0, 1e-12);
     EXPECT_NEAR(stats.meanSeen(entrainmentRegion, 4), (420.0 * 3 + 350) / 4, 1e-12);
 }
 
@@ -338,13 +338,52 @@ TEST(CirculationStatistics, JetFractionPerVisit)
     follow(stats, b, repeat(inDowncomer, 1) + repeat(inEntrainment, 2) + repeat(inSpout, 1), 0.0, 0.1);
     // first seen in the zone: an incomplete visit, not counted
     follow(stats, c, repeat(inEntrainment, 2) + repeat(inSpout, 1), 0.0, 0.1);
-    const auto& f = stats.jetFractions();
+    const auto& f = stats.coreFractions(entrainmentRegion);
     EXPECT_EQ(f[5], 1.0);  // 1 of 4 samples: 0.25
     EXPECT_EQ(f[19], 1.0); // all: the last bin, closed
     EXPECT_EQ(std::accumulate(f.begin(), f.end(), 0.0), 2.0);
     CirculationStatistics restored(bed, 0.0, 100.0, 0.05);
     restored.unpack(stats.pack());
-    EXPECT_EQ(restored.jetFractions(), f);
+    EXPECT_EQ(restored.coreFractions(entrainmentRegion), f);
+}
+
+// The fountain's core: its samples over the spout (|x| <= Wd/2) and those
+// fallen back into the spout, not those over the downcomers; each completed
+// fountain visit's share in it. The jet's sums stay apart.
+TEST(CirculationStatistics, FountainCoreIsTheFountainStateOverTheSpout)
+{
+    EXPECT_TRUE(bed.inCore(fountainRegion, 0.0275, 1.0));
+    EXPECT_FALSE(bed.inCore(fountainRegion, 0.0276, 1.0));
+    EXPECT_TRUE(bed.inCore(fountainRegion, 0.0, 0.5)); // fallen back into the spout
+    EXPECT_FALSE(bed.inCore(spoutRegion, 0.0, 0.5));
+    EXPECT_FALSE(bed.inCore(downcomerRegion, 0.0, 0.5));
+    EXPECT_EQ(bed.inCore(entrainmentRegion, 0.0, 0.05), bed.inJet(0.0, 0.05));
+    CirculationStatistics stats(bed, 0.0, 100.0, 0.05);
+    const Vec3 overAnnulus{0.1, 0.02, 1.0};
+    ParticleSample hot, cool;
+    hot.Tgas = 390;
+    cool.Tgas = 355;
+    std::vector<double> a = freshTrack(), b = freshTrack();
+    follow(stats, a, repeat(inSpout, 1), 0.0, 0.1);
+    follow(stats, a, repeat(inFountain, 1), 0.1, 0.1, hot);
+    follow(stats, a, repeat(overAnnulus, 3), 0.2, 0.1, cool);
+    follow(stats, a, repeat(inDowncomer, 1), 0.5, 0.1);
+    follow(stats, b, repeat(inSpout, 1) + repeat(inFountain, 2) + repeat(inDowncomer, 1), 0.0, 0.1, hot);
+    const auto& f = stats.coreFractions(fountainRegion);
+    EXPECT_EQ(f[5], 1.0);  // a: 1 of 4 samples over the spout
+    EXPECT_EQ(f[19], 1.0); // b: all
+    EXPECT_EQ(std::accumulate(f.begin(), f.end(), 0.0), 2.0);
+    EXPECT_EQ(std::accumulate(stats.coreFractions(entrainmentRegion).begin(),
+                              stats.coreFractions(entrainmentRegion).end(), 0.0),
+              0.0);
+    // 3 core samples of 6 fountain samples, over the sampling times counted
+    EXPECT_NEAR(stats.coreHoldup(fountainRegion) / stats.holdup(fountainRegion), 0.5, 1e-15);
+    EXPECT_NEAR(stats.meanSeenInCore(fountainRegion, 4), 390.0, 1e-12);
+    EXPECT_EQ(stats.coreHoldup(entrainmentRegion), 0.0);
+    CirculationStatistics restored(bed, 0.0, 100.0, 0.05);
+    restored.unpack(stats.pack());
+    EXPECT_EQ(restored.coreFractions(fountainRegion), f);
+    EXPECT_EQ(restored.coreHoldup(fountainRegion), stats.coreHoldup(fountainRegion));
 }
 
 // Packed statistics add up over ranks and restore exactly.
@@ -379,8 +418,9 @@ TEST(CirculationStatistics, PackAddUnpack)
         EXPECT_EQ(restored.residence(s).counts.size() >= both.residence(s).counts.size(), true);
     }
     EXPECT_EQ(restored.entries(fountainRegion), both.entries(fountainRegion));
-    EXPECT_GT(both.jetHoldup(), 0.0);
-    EXPECT_EQ(restored.jetHoldup() * restored.sampleTimes(), both.jetHoldup() * both.sampleTimes());
+    EXPECT_GT(both.coreHoldup(entrainmentRegion), 0.0);
+    EXPECT_EQ(restored.coreHoldup(entrainmentRegion) * restored.sampleTimes(),
+              both.coreHoldup(entrainmentRegion) * both.sampleTimes());
     EXPECT_EQ(restored.pack().size(), two.pack().size());
     EXPECT_THROW(restored.unpack(std::vector<double>(3, 0.0)), std::invalid_argument);
 }
