@@ -68,37 +68,90 @@ double Residence::drawResidual(double u1, double u2, double u3) const
     return u3 * t;
 }
 
-void addJet(Case& c, double share, Region jet)
+namespace
 {
-    const auto named = [&](const std::string& name) {
-        for (std::size_t k = 0; k < c.regions.size(); ++k)
-            if (c.regions[k].name == name) return k;
-        throw std::invalid_argument("addJet: no region " + name);
-    };
-    const std::size_t k = named("entrainment");
+
+std::size_t regionNamed(const Case& c, const std::string& name)
+{
+    for (std::size_t k = 0; k < c.regions.size(); ++k)
+        if (c.regions[k].name == name) return k;
+    throw std::invalid_argument("spouted bed: no region " + name);
+}
+
+} // namespace
+
+void addCore(Case& c, const std::string& region, const std::string& name, double share, Region core)
+{
+    const std::size_t k = regionNamed(c, region);
     Region& rest = c.regions[k];
-    jet.name = "jet";
-    jet.correlation = rest.correlation;
-    jet.residence = Residence{};
-    jet.partOf = static_cast<int>(k);
-    jet.share = share;
-    jet.holdupShare = rest.holdupShare * share;
-    jet.measured = rest.measured;
-    jet.path = kShared;
-    jet.gasRank = 0;
-    const auto beside = [share](double zoneMean, double jetMean) {
-        return (zoneMean - share * jetMean) / (1 - share);
+    core.name = name;
+    core.correlation = rest.correlation;
+    core.residence = Residence{};
+    core.partOf = static_cast<int>(k);
+    core.share = share;
+    core.holdupShare = rest.holdupShare * share;
+    core.measured = rest.measured;
+    const auto beside = [share](double regionMean, double coreMean) {
+        return (regionMean - share * coreMean) / (1 - share);
     };
-    rest.slipReynolds = beside(rest.slipReynolds, jet.slipReynolds);
-    rest.voidage = beside(rest.voidage, jet.voidage);
-    rest.hFile = beside(rest.hFile, jet.hFile);
-    rest.kmFile = beside(rest.kmFile, jet.kmFile);
-    rest.jet = static_cast<int>(c.regions.size());
-    // jet -> spout -> fountain; jet -> the rest of the zone -> downcomer -> fountain
-    rest.path = 1;
-    rest.gasRank = 1;
-    c.regions[named("downcomer")].gasRank = 2;
-    c.regions.push_back(jet);
+    rest.slipReynolds = beside(rest.slipReynolds, core.slipReynolds);
+    rest.voidage = beside(rest.voidage, core.voidage);
+    rest.hFile = beside(rest.hFile, core.hFile);
+    rest.kmFile = beside(rest.kmFile, core.kmFile);
+    rest.core = static_cast<int>(c.regions.size());
+    c.regions.push_back(core);
+}
+
+GasNetwork gasNetwork(const Case& c)
+{
+    GasNetwork n;
+    const double G = c.airFlow;
+    if (!c.circulating)
+    {
+        n.order.push_back({0, {{-1, G}}});
+        n.outlet.push_back({0, G});
+        return n;
+    }
+    const double up = G * c.spoutShare, seep = G * (1 - c.spoutShare);
+    const auto at = [&](const std::string& name) { return static_cast<int>(regionNamed(c, name)); };
+    const int zone = at("entrainment"), spout = at("spout"), downcomer = at("downcomer"),
+              fountain = at("fountain");
+    const auto index = [](int r) { return static_cast<std::size_t>(r); };
+    const int jet = c.regions[index(zone)].core, over = c.regions[index(fountain)].core;
+    // the base: all the gas through the jet, which exchanges a recycle with
+    // the rest of the zone beside it and sends it the seepage
+    int toSpout = zone;
+    if (jet >= 0)
+    {
+        const double back = G * c.regions[index(jet)].intoCore;
+        n.order.push_back({index(jet), {{-1, G}, {zone, back}}});
+        n.order.push_back({index(zone), {{jet, seep + back}}});
+        toSpout = jet;
+    }
+    else
+        n.order.push_back({index(zone), {{-1, G}}});
+    n.order.push_back({index(spout), {{toSpout, up}}});
+    n.order.push_back({index(downcomer), {{zone, seep}}});
+    // the top: the spout's gas into the fountain's core, the seepage into
+    // the rest beside it, the two exchanging across the core's sides
+    if (over >= 0)
+    {
+        const Region& core = c.regions[index(over)];
+        const double into = G * core.intoCore, out = G * core.outOfCore;
+        if (up + into - out < 0 || seep + out - into < 0)
+            throw std::invalid_argument("spouted bed: the fountain core's flows out " + std::to_string(out)
+                                        + " and in " + std::to_string(into)
+                                        + " kg/s leave a compartment more gas than enters it");
+        n.order.push_back({index(over), {{spout, up}, {fountain, into}}});
+        n.order.push_back({index(fountain), {{downcomer, seep}, {over, out}}});
+        n.outlet = {{over, up + into - out}, {fountain, seep + out - into}};
+    }
+    else
+    {
+        n.order.push_back({index(fountain), {{spout, up}, {downcomer, seep}}});
+        n.outlet = {{fountain, G}};
+    }
+    return n;
 }
 
 void transferCoefficients(Case& c)
@@ -169,7 +222,7 @@ public:
     // the samples
     std::vector<int> region;
     std::vector<double> left, X, T, above;
-    std::vector<double> inJet; // the share of its current visit a sample spends in its region's jet
+    std::vector<double> inCore; // the share of its current visit a sample spends in its region's core
     std::vector<std::uint64_t> rng;
     std::vector<double> state;
     std::size_t width;
@@ -183,13 +236,15 @@ public:
     GasField booked;
     std::vector<double> ratePerKernel; // the last step's evaporation per kernel in each region [kg/s]
     std::vector<double> lastVapour;    // the vapour density the last step's particles saw [kg/m3]
+    std::vector<GasState> leaving;     // the gas leaving each compartment (seen: as its kernels see it)
     double gasWater = 0, gasEnergy = 0, initialWater = 0, initialEnthalpy = 0, exchangeScale = 0;
     std::vector<double> holdupTime;
     std::vector<double> gasTTime, gasWTime; // the compartments' gas times dt
     std::vector<Residence> residence;       // the regions', prepared for drawing
-    Residence jetFractions;                 // the jet's visitFractions, prepared
-    std::vector<double> occupancy;          // kernels per region at the step's start
-    std::size_t cycle;                      // the regions of the cycle (the first)
+    std::vector<Residence> fractions;       // the cores' visitFractions, prepared
+    GasNetwork network;
+    std::vector<double> occupancy; // kernels per region at the step's start
+    std::size_t cycle;             // the regions of the cycle (the first)
 
 private:
     void place(std::size_t i);
@@ -199,7 +254,19 @@ private:
     void segment(std::size_t i, std::size_t r, double tau, Exchange& ex);
     GasField gasFor(const Exchange& ex, double dt) const;
     void solveGas();
-    GasState solveRegion(std::size_t r, double flow, double W, double h, double kernels, double sumT) const;
+    // dry air [kg/s], humidity ratio, enthalpy [J/kg dry air]
+    struct Entering
+    {
+        double flow, W, h;
+    };
+    Entering entering(const GasCompartment& k) const;
+    struct CompartmentGas
+    {
+        GasState leaving, seen;
+    };
+    CompartmentGas solveRegion(std::size_t r, double flow, double W, double h, double kernels,
+                               double sumT) const;
+    double seenShare(double N) const;
     double inletEnthalpy() const { return psy::enthalpy(c.inletC, c.inletW); }
 };
 
@@ -215,13 +282,7 @@ Bed::Bed(const Case& cs) : c(cs)
     above.assign(n, 0.0);
     rng.resize(n);
     state.assign(n * width, 0.0);
-    inJet.assign(n, 0.0);
-    for (const Region& r : c.regions)
-        if (r.partOf >= 0)
-        {
-            jetFractions = r.visitFractions;
-            jetFractions.prepare();
-        }
+    inCore.assign(n, 0.0);
     cycle = static_cast<std::size_t>(
         std::count_if(c.regions.begin(), c.regions.end(), [](const Region& r) { return r.partOf < 0; }));
     holdupTime.assign(c.regions.size(), 0.0);
@@ -231,7 +292,10 @@ Bed::Bed(const Case& cs) : c(cs)
     {
         residence.push_back(r.residence);
         residence.back().prepare();
+        fractions.push_back(r.visitFractions);
+        fractions.back().prepare();
     }
+    if (!c.gasAtInlet) network = gasNetwork(c);
     const std::size_t rows = c.initialStateX.size();
     for (std::size_t i = 0; i < n; ++i)
     {
@@ -248,6 +312,7 @@ Bed::Bed(const Case& cs) : c(cs)
     }
     const Exchange none(c.regions.size());
     seen = gasFor(none, 1.0);
+    leaving = seen.region;
     ratePerKernel.assign(c.regions.size(), 0.0);
     for (const GasState& g : seen.region)
         lastVapour.push_back(spoutlab::vapourDensity(spoutlab::MoistAir{g.T, g.W, c.pressure}));
@@ -273,69 +338,24 @@ void Bed::place(std::size_t i)
     enter(i, k);
 }
 
-// A visit of region r begins: the share of it in the region's jet.
+// A visit of region r begins: the share of it in the region's core.
 void Bed::enter(std::size_t i, std::size_t r)
 {
-    const int jet = c.regions[r].jet;
-    if (jet < 0) return;
-    const Region& j = c.regions[static_cast<std::size_t>(jet)];
-    if (j.visitFractions.counts.empty())
-        inJet[i] = j.share;
+    const int core = c.regions[r].core;
+    if (core < 0) return;
+    const std::size_t k = static_cast<std::size_t>(core);
+    if (c.regions[k].visitFractions.counts.empty())
+        inCore[i] = c.regions[k].share;
     else
     {
         const double u1 = uniform(rng[i]), u2 = uniform(rng[i]);
-        inJet[i] = std::min(jetFractions.draw(u1, u2), 1.0);
+        inCore[i] = std::min(fractions[k].draw(u1, u2), 1.0);
     }
 }
 
-// The gas along its paths, in the gas's order: all of it crosses the
-// entrainment zone's first compartment (kShared), then spoutShare rises
-// through the spout (path 0) and the rest seeps through the downcomer (path
-// 1), and the two meet again in the fountain region above the plates
-// (kShared, later in the order), which all the gas leaves the bed through.
-struct GasPaths
-{
-    double flow[3], W[3], h[3]; // dry air [kg/s], humidity ratio, enthalpy [J/kg] per path
-    bool split = false;         // a region of path 0 or 1 has been crossed
-    GasPaths(const Case& c, double hIn)
-        : flow{c.airFlow * c.spoutShare, c.airFlow * (1 - c.spoutShare), c.airFlow},
-          W{c.inletW, c.inletW, c.inletW}, h{hIn, hIn, hIn}
-    {}
-    // the gas entering a region of path p: a shared region after the split
-    // takes the two paths mixed
-    void entering(int p, double& w, double& enthalpy) const
-    {
-        if (p == kShared && split)
-        {
-            w = (flow[0] * W[0] + flow[1] * W[1]) / (flow[0] + flow[1]);
-            enthalpy = (flow[0] * h[0] + flow[1] * h[1]) / (flow[0] + flow[1]);
-            return;
-        }
-        w = W[p], enthalpy = h[p];
-    }
-    // the gas leaving a region of path p enters the next region of p (of both
-    // paths after a shared region)
-    void leave(int p, double w, double enthalpy)
-    {
-        const int first = p == kShared ? 0 : p, last = p == kShared ? kShared : p;
-        for (int q = first; q <= last; ++q) W[q] = w, h[q] = enthalpy;
-        if (p != kShared) split = true;
-    }
-    // the gas leaving the bed: the two paths mixed (one after the fountain)
-    void outlet(double& w, double& enthalpy) const { entering(kShared, w, enthalpy); }
-    // calls f(region, path) for the regions holding gas, in the gas's order
-    template <class F>
-    static void walk(const Case& c, const GasPaths& paths, F f)
-    {
-        for (int rank = 0; rank < kGasRanks; ++rank)
-            for (std::size_t r = 0; r < c.regions.size(); ++r)
-            {
-                const int p = c.regions[r].path;
-                if (c.regions[r].gasRank == rank && paths.flow[p] > 0) f(r, p);
-            }
-    }
-};
-
+// The outlet of a step's exchange: all the compartments' gas leaves the bed
+// through it, so it carries all their water and energy, whatever way each
+// took (the regions' gas stays at the inlet air: only the outlet is booked).
 GasField Bed::gasFor(const Exchange& ex, double dt) const
 {
     GasField g;
@@ -344,42 +364,38 @@ GasField Bed::gasFor(const Exchange& ex, double dt) const
     g.outlet = g.region.front();
     g.outletEnthalpy = hIn;
     if (c.gasAtInlet) return g;
-    GasPaths paths(c, hIn);
-    const double recycle = c.airFlow * c.jetRecycle;
-    GasPaths::walk(c, paths, [&](std::size_t r, int p) {
-        double W, h;
-        paths.entering(p, W, h);
-        const Region& reg = c.regions[r];
-        double flow = paths.flow[p];
-        if (reg.partOf >= 0)
-        {
-            // the jet: the share of the rest's water and energy that the
-            // recycle brings back (what it does not, the seepage carries on)
-            const std::size_t rest = static_cast<std::size_t>(reg.partOf);
-            const double back = recycle / (paths.flow[1] + recycle);
-            W += back * ex.water[rest] / (flow * dt);
-            h += back * ex.energy[rest] / (flow * dt);
-        }
-        else if (reg.jet >= 0)
-            flow += recycle; // the rest of the zone: the seepage and the recycle
-        W += ex.water[r] / (flow * dt);
-        h += ex.energy[r] / (flow * dt);
-        paths.leave(p, W, h);
-        g.region[r] = GasState{psy::temperatureFromEnthalpy(h, W) + kKelvin, W};
-    });
-    double Wout;
-    paths.outlet(Wout, g.outletEnthalpy);
-    g.outlet = GasState{psy::temperatureFromEnthalpy(g.outletEnthalpy, Wout) + kKelvin, Wout};
+    const double flow = c.airFlow * dt;
+    const double W = c.inletW + std::accumulate(ex.water.begin(), ex.water.end(), 0.0) / flow;
+    g.outletEnthalpy = hIn + std::accumulate(ex.energy.begin(), ex.energy.end(), 0.0) / flow;
+    g.outlet = GasState{psy::temperatureFromEnthalpy(g.outletEnthalpy, W) + kKelvin, W};
     return g;
 }
 
-// The gas leaving region r (a well-mixed compartment of dry-air flow `flow`
-// entering at W, h [J/kg]) in balance with the region's kernels: their heat
-// h A (T_g - T_p) is linear in T_g, their water is the last step's rate per
-// kernel corrected by the film, -k_m A (rho_v - rho_v,last): implicit in the
-// gas (the particles take far more heat and water than the seepage carries,
-// an explicit gas would diverge), a Newton step in time of the water.
-GasState Bed::solveRegion(std::size_t r, double flow, double W, double h, double kernels, double sumT) const
+// Where in a compartment between its entering (0) and leaving (1) gas the
+// gas its kernels see lies on average, for N = (what the kernels exchange
+// per kelvin or per kg/kg of the gas) / (what the flow carries): 1 when it is
+// well mixed; in plug flow, along which the gas relaxes as exp(-N z) towards
+// the kernels, the mean over z of 1 - exp(-N z) over that of the outlet,
+// (1 - (1 - e^-N)/N)/(1 - e^-N), from 1/2 (N -> 0: half the change) to 1.
+double Bed::seenShare(double N) const
+{
+    if (!c.plugFlow) return 1.0;
+    if (N < 1e-6) return 0.5 + N / 12;
+    const double a = -std::expm1(-N);
+    return (1 - a / N) / a;
+}
+
+// The gas of region r (a compartment of dry-air flow `flow` entering at W,
+// h [J/kg]) in balance with the region's kernels: leaving it and as its
+// kernels see it, entering + seenShare x (leaving - entering). Their heat
+// h A (T_seen - T_p) is linear in the gas, their water is the last step's
+// rate per kernel corrected by the film, -k_m A (rho_v - rho_v,last):
+// implicit in the gas (the particles take far more heat and water than the
+// seepage carries, an explicit gas would diverge), a Newton step in time of
+// the water. In plug flow the leaving gas is then exactly the exponential
+// relaxation's, T_p + (T_in - T_p) e^-N, for kernels at one temperature.
+Bed::CompartmentGas Bed::solveRegion(std::size_t r, double flow, double W, double h, double kernels,
+                                     double sumT) const
 {
     const Region& reg = c.regions[r];
     const double area = spoutlab::surfaceArea(spoutlab::Kernel{c.diameter, c.dryMass, 300});
@@ -388,18 +404,48 @@ GasState Bed::solveRegion(std::size_t r, double flow, double W, double h, double
     const double tp = kernels > 0 ? sumT / kernels - kKelvin : 0.0;
     const double hv = psy::kHfg0 + psy::kCpVapour * tp;
     const double rv = spoutlab::waterVapourGasConstant();
-    GasState g = seen.region[r];
+    const double tIn = psy::temperatureFromEnthalpy(h, W);
+    CompartmentGas g{leaving[r], seen.region[r]};
     for (int k = 0; k < 4; ++k)
     {
-        const double rho = c.pressure * g.W / ((psy::kMolarRatio + g.W) * rv * g.T);
-        const double slope = c.pressure * psy::kMolarRatio / std::pow(psy::kMolarRatio + g.W, 2) / (rv * g.T);
-        const double Wg = (flow * W + s0 - K * (rho - lastVapour[r]) + K * slope * g.W) / (flow + K * slope);
+        const GasState& s = g.seen;
+        const double rho = c.pressure * s.W / ((psy::kMolarRatio + s.W) * rv * s.T);
+        const double slope = c.pressure * psy::kMolarRatio / std::pow(psy::kMolarRatio + s.W, 2) / (rv * s.T);
+        const double bw = seenShare(K * slope / flow);
+        const double Wg = (flow * W + s0 - K * (rho - lastVapour[r]) + K * slope * (s.W - W * (1 - bw)))
+                          / (flow + K * slope * bw);
         const double S = flow * (Wg - W);
-        const double t = (flow * h - flow * Wg * psy::kHfg0 + S * hv - H * kKelvin + B)
-                         / (flow * (psy::kCpAir + Wg * psy::kCpVapour) + H);
-        g = GasState{t + kKelvin, std::max(Wg, 0.0)};
+        const double cp = psy::kCpAir + Wg * psy::kCpVapour;
+        const double bt = seenShare(H / (flow * cp));
+        const double t = (flow * h - flow * Wg * psy::kHfg0 + S * hv - H * (1 - bt) * tIn - H * kKelvin + B)
+                         / (flow * cp + H * bt);
+        g.leaving = GasState{t + kKelvin, std::max(Wg, 0.0)};
+        g.seen = c.plugFlow ? GasState{tIn + bt * (t - tIn) + kKelvin, std::max(W + bw * (Wg - W), 0.0)}
+                            : g.leaving;
     }
     return g;
+}
+
+// The gas entering compartment k, its inflows mixed (one inflow taken as it
+// is): each compartment's as this step has solved it so far.
+Bed::Entering Bed::entering(const GasCompartment& k) const
+{
+    Entering e{0, 0, 0};
+    double water = 0, energy = 0;
+    int sources = 0;
+    for (const GasInflow& in : k.in)
+    {
+        if (!(in.flow > 0)) continue;
+        const bool inlet = in.from < 0;
+        const GasState g =
+            inlet ? GasState{c.inletC + kKelvin, c.inletW} : leaving[static_cast<std::size_t>(in.from)];
+        e.h = inlet ? inletEnthalpy() : psy::enthalpy(g.T - kKelvin, g.W);
+        e.W = g.W;
+        e.flow += in.flow, water += in.flow * g.W, energy += in.flow * e.h;
+        ++sources;
+    }
+    if (sources > 1) e.W = water / e.flow, e.h = energy / e.flow;
+    return e;
 }
 
 void Bed::solveGas()
@@ -408,50 +454,43 @@ void Bed::solveGas()
     std::vector<double> kernels(nr, 0.0), sumT(nr, 0.0);
     for (std::size_t i = 0; i < X.size(); ++i)
     {
-        // a sample in a region with a jet: its share of the visit there
+        // a sample in a region with a core: its share of the visit there
         const std::size_t r = static_cast<std::size_t>(region[i]);
-        const int jet = c.regions[r].jet;
-        const double there = jet < 0 ? 0.0 : inJet[i];
+        const int core = c.regions[r].core;
+        const double there = core < 0 ? 0.0 : inCore[i];
         kernels[r] += weight * (1 - there);
         sumT[r] += weight * (1 - there) * T[i];
-        if (jet < 0) continue;
-        kernels[static_cast<std::size_t>(jet)] += weight * there;
-        sumT[static_cast<std::size_t>(jet)] += weight * there * T[i];
+        if (core < 0) continue;
+        kernels[static_cast<std::size_t>(core)] += weight * there;
+        sumT[static_cast<std::size_t>(core)] += weight * there * T[i];
     }
     occupancy = kernels;
     if (c.gasAtInlet) return;
-    GasPaths paths(c, inletEnthalpy());
-    const double recycle = c.airFlow * c.jetRecycle;
-    GasPaths::walk(c, paths, [&](std::size_t r, int p) {
-        double W, h;
-        paths.entering(p, W, h);
-        const Region& reg = c.regions[r];
-        double flow = paths.flow[p];
-        if (reg.partOf >= 0 && recycle > 0)
+    for (const GasCompartment& k : network.order)
+    {
+        const Entering e = entering(k);
+        if (e.flow > 0)
         {
-            // the jet: the inlet gas and the recycle of the rest's last gas
-            const GasState& back = seen.region[static_cast<std::size_t>(reg.partOf)];
-            W = (flow * W + recycle * back.W) / (flow + recycle);
-            h = (flow * h + recycle * psy::enthalpy(back.T - kKelvin, back.W)) / (flow + recycle);
-            flow += recycle;
+            const CompartmentGas g =
+                solveRegion(k.region, e.flow, e.W, e.h, kernels[k.region], sumT[k.region]);
+            leaving[k.region] = g.leaving;
+            seen.region[k.region] = g.seen;
         }
-        else if (reg.jet >= 0)
-            flow += recycle;
-        seen.region[r] = solveRegion(r, flow, W, h, kernels[r], sumT[r]);
-        paths.leave(p, seen.region[r].W, psy::enthalpy(seen.region[r].T - kKelvin, seen.region[r].W));
-    });
+    }
 }
 
-// One kernel over tau in its region: in a region with a jet first the time
-// beside it, then its share in the jet, as the kernels go through the zone.
+// One kernel over tau in its region: in a region with a core first the time
+// beside it, then its share in the core (as the kernels go through the
+// entrainment zone; in the fountain the order is a choice, the exchange over
+// a step hardly depends on it).
 void Bed::visit(std::size_t i, double tau, Exchange& ex)
 {
     const std::size_t r = static_cast<std::size_t>(region[i]);
-    const int jet = c.regions[r].jet;
-    if (jet < 0) return segment(i, r, tau, ex);
-    const double jetTime = inJet[i] * tau;
-    segment(i, r, tau - jetTime, ex);
-    segment(i, static_cast<std::size_t>(jet), jetTime, ex);
+    const int core = c.regions[r].core;
+    if (core < 0) return segment(i, r, tau, ex);
+    const double coreTime = inCore[i] * tau;
+    segment(i, r, tau - coreTime, ex);
+    segment(i, static_cast<std::size_t>(core), coreTime, ex);
 }
 
 // One kernel over tau in gas compartment r: the CFD-DEM coupling step's sequence.
@@ -536,7 +575,7 @@ void Bed::step(double dt)
     {
         const std::size_t r = static_cast<std::size_t>(region[i]);
         holdupTime[r] += dt;
-        if (c.regions[r].jet >= 0) holdupTime[static_cast<std::size_t>(c.regions[r].jet)] += inJet[i] * dt;
+        if (c.regions[r].core >= 0) holdupTime[static_cast<std::size_t>(c.regions[r].core)] += inCore[i] * dt;
     }
     booked = gasFor(ex, dt);
     const double G = c.airFlow;

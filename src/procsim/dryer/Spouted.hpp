@@ -29,20 +29,30 @@
 // with X the moisture after the step (explicit in T_p, as LIGGGHTS').
 //
 // Gas. Its residence is milliseconds against the seconds of the particles'
-// changes: a quasi-steady compartment balance of water and energy along its
-// two paths: all of it crosses the entrainment zone at the base, where the
-// jet meets the kernels that enter the spout, then spoutShare of the dry air
-// rises through the spout and the rest (downcomerShare) seeps through the
-// downcomer, and the two meet again in the fountain region above the plates,
-// which all the gas leaves through. Where the statistics measure the jet
-// (addJet) the zone is two compartments, the jet and the rest beside it.
-// Each compartment is well mixed: the gas the particles there see is the gas
-// leaving it, the gas entering plus what its particles gave (water dW,
-// energy sum(dW h_v(T_p)) - q tau) over the dry-air flow through it.
-// Explicit like the CFD-DEM's exchange: a step's particles see the
-// compartments computed from the step before; the outlet a step books
-// carries exactly that step's exchange, so the balances close to round-off.
-// gasModel inlet holds every region at the inlet air (unlimited air).
+// changes: a quasi-steady balance of water and energy over a network of
+// well-mixed compartments (gasNetwork), one per region and one per core of a
+// region (addCore). All the gas crosses the entrainment zone at the base,
+// where the jet meets the kernels that enter the spout; then spoutShare of
+// the dry air rises through the spout and the rest (downcomerShare) seeps
+// through the downcomer, and the two meet again in the fountain region above
+// the plates, which all the gas leaves through. Where the statistics measure
+// the cores, the zone is the jet, which all the gas crosses first, and the
+// rest beside it, which the seepage crosses and exchanges a measured recycle
+// with; the fountain region is its core over the spout, which the spout's gas
+// enters, and the rest over the downcomers, which the seepage enters, the two
+// exchanging the measured flows across the core's sides. The gas the
+// particles of a compartment see is the gas leaving it, the gas entering plus
+// what its particles gave (water dW, energy sum(dW h_v(T_p)) - q tau) over
+// the dry-air flow through it. Explicit like the CFD-DEM's exchange: a
+// step's particles see the compartments computed from the step before, a
+// compartment fed by one later in the order takes that one's gas of the step
+// before; the outlet a step books carries exactly that step's exchange, all
+// the compartments' (all their gas leaves through it), so the balances close
+// to round-off. With gasModel plugFlow each compartment's gas is a plug flow
+// instead, along which it relaxes towards its kernels: they see its mean
+// along the compartment, between the entering and the leaving gas (half-way
+// where it hardly changes: the jet, the spout). gasModel inlet holds every
+// region at the inlet air (unlimited air).
 //
 // Time step (adaptive): the step is raised (at most x2) or cut (at most /2)
 // towards the largest that keeps (1) the largest change of one kernel's
@@ -88,10 +98,6 @@ struct Residence
     std::vector<double> cumulative, lengthCumulative; // running sums of count_i and count_i (i + 1/2)
 };
 
-// Region::path of the zone all the gas crosses before it splits into the
-// spout's path (0) and the seepage's (1); the places along the gas's way.
-constexpr int kShared = 2, kGasRanks = 4;
-
 // One region of the bed as the predictor uses it.
 struct Region
 {
@@ -108,17 +114,21 @@ struct Region
     double gasTemperatureFile = 0; // [K] (0: none)
     double gasHumidityFile = -1;   // the statistics' humidity ratio [kg/kg dry air] (-1: none)
     Residence residence;           // empty without circulation
-    int path = 0;                  // gas path: 0 spout, 1 seepage, kShared both (before the split)
-    int gasRank = 0;               // its place in the gas's order (0 first)
     bool measured = false;         // its conditions from the statistics
-    // A gas compartment inside a region of the cycle (the jet, inside the
-    // entrainment zone): partOf its index, share of that region's kernel time
-    // spent in it; the region then names it in `jet`. -1: none.
-    int partOf = -1, jet = -1;
+    // A gas compartment inside a region of the cycle, its core (the jet
+    // inside the entrainment zone, the fountain's core over the spout):
+    // partOf its index, share of that region's kernel time spent in it; the
+    // region then names it in `core`. -1: none.
+    int partOf = -1, core = -1;
     double share = 1;
-    // the jet: its share of each visit of its region, per visit (a histogram
+    // a core: its share of each visit of its region, per visit (a histogram
     // on [0, 1]; empty: every visit spends `share` in it)
     Residence visitFractions;
+    // a core: the dry air flowing into it from the rest of its region and out
+    // of it into the rest, across its sides, as shares of the inlet's (the
+    // statistics' gas.intoJet, gas.intoFountainCore, gas.outOfFountainCore;
+    // the jet's outflow to the rest is the seepage plus its inflow)
+    double intoCore = 0, outOfCore = 0;
 };
 
 // Gas properties as constant/transportProperties has them.
@@ -147,9 +157,6 @@ struct Case
     double airFlow = 0;    // dry air [kg/s]
     double fanPower = 0;   // [W]
     double spoutShare = 1; // of the dry air; the rest seeps through entrainment and downcomer
-    // of the dry air, what flows back from the rest of the entrainment zone
-    // into the jet (the statistics' gas.intoJet; 0 without a jet)
-    double jetRecycle = 0;
     // the bed
     double bedParticles = 1, diameter = 8e-3, dryMass = 2.5e-4, initialX = 0.3333, initialC = 25;
     double dryHeatCapacity = 1465;
@@ -164,6 +171,10 @@ struct Case
         regions; // the cycle's order, then its regions' compartments; one region: no circulation
     bool circulating = true;
     bool gasAtInlet = false; // gasModel inlet: unlimited air
+    // gasModel plugFlow: each compartment's gas flows through it as a plug,
+    // its kernels see the mean along it (Bed::seenShare); compartments: each
+    // well mixed, its kernels see the gas leaving it
+    bool plugFlow = false;
     // transfer_coefficients measured: each region's h and k_m are the
     // statistics' (the mean over its kernels), not its correlation at the
     // mean slip Re and voidage, which differ where Re and voidage scatter
@@ -179,18 +190,41 @@ struct Case
     TimeStepControl step;
 };
 
-// The entrainment zone as two gas compartments: the jet under the spout,
-// which all the gas crosses first and which holds `share` of the zone's
-// kernels (`jet` the means its kernels saw: slipRe, voidage, h, k_m, gas),
-// and the rest of the zone beside it, which only the seepage crosses on its
-// way to the downcomer. The zone's means become the rest's: each is
-// share x the jet's + (1 - share) x the rest's. Its holdup and gas as the
-// statistics give them stay the zone's (the predictor reports the zone's
-// kernels' gas, time-weighted over both). 0 < share < 1; before
-// transferCoefficients. With c.jetRecycle, the jet and the rest exchange gas
-// besides the seepage: the rest takes the seepage and the recycle from the
-// jet and gives the recycle back.
-void addJet(Case& c, double share, Region jet);
+// A region as two gas compartments, its core and the rest beside it: the
+// jet under the spout (region "entrainment", core "jet"), which all the gas
+// crosses first, or the fountain's core over the spout (region "fountain",
+// core "fountainCore"), which the spout's gas enters. The core holds `share`
+// of the region's kernels (`core` the means its kernels saw: slipRe,
+// voidage, h, k_m, gas, and its flows intoCore, outOfCore). The region's
+// means become the rest's: each is share x the core's + (1 - share) x the
+// rest's. Its holdup and gas as the statistics give them stay the region's
+// (the predictor reports the region's kernels' gas, time-weighted over
+// both). 0 < share < 1; before transferCoefficients.
+void addCore(Case& c, const std::string& region, const std::string& name, double share, Region core);
+
+// One inflow of a gas compartment: from the inlet (-1) or the compartment of
+// that region index, dry air [kg/s].
+struct GasInflow
+{
+    int from;
+    double flow;
+};
+struct GasCompartment
+{
+    std::size_t region;
+    std::vector<GasInflow> in;
+};
+// The compartments in the order the gas is solved, and what leaves the bed.
+struct GasNetwork
+{
+    std::vector<GasCompartment> order;
+    std::vector<GasInflow> outlet;
+};
+// The case's network: one compartment of the still region, or the four
+// regions' and their cores' (the gas paths above). Throws
+// std::invalid_argument where a core's flows would leave a compartment more
+// gas than enters it.
+GasNetwork gasNetwork(const Case& c);
 
 // h and k_m of every region: its correlation's (the physics core's) from
 // its slip Re and voidage at the case's gas and kernel diameter, and the

@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <set>
+#include <tuple>
 
 #include "CornProperties.hpp"
 #include "InputError.hpp" // coupling/'s
@@ -24,13 +26,8 @@ namespace
 
 namespace psy = spoutlab::psy;
 
-// the four regions of the statistics: gas path and place along it
-struct RegionPlace
-{
-    int path, rank;
-};
-const std::map<std::string, RegionPlace> kRegions = {
-    {"entrainment", {kShared, 0}}, {"spout", {0, 1}}, {"downcomer", {1, 1}}, {"fountain", {kShared, 3}}};
+// the four regions of the statistics
+const std::set<std::string> kRegions = {"entrainment", "spout", "downcomer", "fountain"};
 const char* const kGeometry[] = {"Wd", "He", "Hd", "plateThickness", "width", "depth"};
 
 // a physics-core input error (model settings) as procsim's
@@ -120,7 +117,7 @@ struct CaseGeometry
     double velocity = 0, massFlow = 0;
 };
 
-// The jet's share of each entrainment visit: a histogram over [0, 1].
+// A core's share of each visit of its region: a histogram over [0, 1].
 Residence readVisitFractions(const YamlInput& f)
 {
     Residence res;
@@ -140,32 +137,37 @@ Residence readVisitFractions(const YamlInput& f)
     return res;
 }
 
-// The jet under the spout (conditions.entrainment.jet, where the statistics
-// have it, as spoutFoam's do): a gas compartment of the entrainment zone
-// (spouted::addJet).
-void readJet(const YamlInput& cond, Case& c)
+// A region's core, where the statistics have it as spoutFoam's do
+// (conditions.entrainment.jet, conditions.fountain.core): a gas compartment
+// of the region (spouted::addCore), with its flows across its sides (gas.into,
+// gas.outOf: dry-air shares of the inlet's; 0 where the file has none).
+void readCore(const YamlInput& cond, const YamlInput& gas, Case& c, const std::string& region,
+              const std::string& key, const std::string& name, const std::string& into,
+              const std::string& outOf)
 {
-    const YamlInput zone = cond.child("entrainment");
-    if (!zone.has("jet")) return;
-    const YamlInput j = zone.child("jet");
+    const YamlInput zone = cond.child(region);
+    if (!zone.has(key)) return;
+    const YamlInput j = zone.child(key);
     const double share = j.within("holdup", 0, zone.number("holdup")) / zone.number("holdup");
-    if (!(share > 0 && share < 1)) return; // all or none of its kernels in the jet: one compartment
-    Region jet;
-    jet.slipReynolds = j.within("slipRe", 0, 1e6);
-    jet.voidage = j.within("voidage", 1e-3, 1);
-    jet.hFile = j.within("h", 0, 1e6, "W/m2/K");
-    jet.kmFile = j.within("km", 0, 1e3, "m/s");
-    jet.gasTemperatureFile = j.within("Tgas", 0, 2000, "K");
-    jet.gasHumidityFile = j.within("humidityRatio", -1, 0, 1);
-    if (j.has("visitFractions")) jet.visitFractions = readVisitFractions(j.child("visitFractions"));
-    addJet(c, share, jet);
+    if (!(share > 0 && share < 1)) return; // all or none of its kernels in the core: one compartment
+    Region core;
+    core.slipReynolds = j.within("slipRe", 0, 1e6);
+    core.voidage = j.within("voidage", 1e-3, 1);
+    core.hFile = j.within("h", 0, 1e6, "W/m2/K");
+    core.kmFile = j.within("km", 0, 1e3, "m/s");
+    core.gasTemperatureFile = j.within("Tgas", 0, 2000, "K");
+    core.gasHumidityFile = j.within("humidityRatio", -1, 0, 1);
+    if (j.has("visitFractions")) core.visitFractions = readVisitFractions(j.child("visitFractions"));
+    if (gas.has(into)) core.intoCore = gas.within(into, 0, 10);
+    if (!outOf.empty() && gas.has(outOf)) core.outOfCore = gas.within(outOf, 0, 10);
+    addCore(c, region, name, share, core);
     const Region& rest = c.regions[static_cast<std::size_t>(c.regions.back().partOf)];
     const std::pair<const char*, double> beside[] = {
         {"slipRe", rest.slipReynolds}, {"voidage", rest.voidage}, {"h", rest.hFile}, {"km", rest.kmFile}};
-    for (const auto& [key, v] : beside)
+    for (const auto& [k, v] : beside)
         if (!(v >= 0))
-            throw j.error(key, "a mean the zone's can hold (the rest beside the jet came out "
-                                   + formatNumber(v) + ")");
+            throw j.error(k, "a mean the region's can hold (the rest beside the " + name + " came out "
+                                 + formatNumber(v) + ")");
 }
 
 // The statistics: checked against the case, their regions into c.
@@ -204,8 +206,6 @@ void readStatistics(const std::string& file, Case& c, const CaseGeometry& g, con
             throw caseRegions.error(name, "the heat-transfer model of region '" + name + "' of " + file);
         Region r;
         r.name = name;
-        r.path = kRegions.at(name).path;
-        r.gasRank = kRegions.at(name).rank;
         r.residence = readResidence(res.child(name));
         const YamlInput k = cond.child(name);
         r.slipReynolds = k.within("slipRe", 0, 1e6);
@@ -221,14 +221,24 @@ void readStatistics(const std::string& file, Case& c, const CaseGeometry& g, con
         r.measured = true;
         c.regions.push_back(r);
     }
-    if (c.circulating) readJet(cond, c);
     const YamlInput gas = s.child("gas");
     c.spoutShare = gas.within("spoutShare", 0, 1);
     const double seep = gas.within("downcomerShare", 0, 1);
-    if (c.regions.back().partOf >= 0 && gas.has("intoJet")) c.jetRecycle = gas.within("intoJet", 0, 10);
     if (std::fabs(c.spoutShare + seep - 1) > 1e-3)
         throw gas.error("downcomerShare",
                         "1 - spoutShare = " + formatNumber(1 - c.spoutShare) + " within 1e-3");
+    if (!c.circulating) return;
+    readCore(cond, gas, c, "entrainment", "jet", "jet", "intoJet", "");
+    readCore(cond, gas, c, "fountain", "core", "fountainCore", "intoFountainCore", "outOfFountainCore");
+    const Region& core = c.regions.back();
+    if (core.name != "fountainCore") return;
+    // the core's net outflow across its sides: at most the spout's gas, at
+    // least minus the seepage, or a compartment would lose more than it takes
+    const double net = core.outOfCore - core.intoCore;
+    if (net > c.spoutShare || net < -seep)
+        throw gas.error("outOfFountainCore", "outOfFountainCore - intoFountainCore (" + formatNumber(net)
+                                                 + ") between -downcomerShare (" + formatNumber(-seep)
+                                                 + ") and spoutShare (" + formatNumber(c.spoutShare) + ")");
 }
 
 // The case's regions: correlation and optional overrides of the measured.
@@ -243,10 +253,8 @@ void readRegions(const YamlInput& in, Case& c, const std::string& still)
             if (r.name == still) kept.push_back(r);
         if (kept.empty()) kept.push_back(Region{});
         kept[0].name = still;
-        kept[0].path = 0;
-        kept[0].gasRank = 0;
         kept[0].residence = Residence{};
-        kept[0].jet = -1;
+        kept[0].core = -1;
         c.regions = kept;
         c.spoutShare = 1;
         for (const std::string& k : regs.keys())
@@ -474,9 +482,10 @@ Case readCase(const std::string& path)
     const spoutlab::Parameters modelProps = props(in, c.dryingName + "Props");
     c.drying = physics([&] { return spoutlab::DryingModel::New(c.dryingName, modelProps); });
     const std::string gasModel = in.text("gasModel", "compartments");
-    if (gasModel != "compartments" && gasModel != "inlet")
-        throw in.error("gasModel", "compartments or inlet");
+    if (gasModel != "compartments" && gasModel != "plugFlow" && gasModel != "inlet")
+        throw in.error("gasModel", "compartments, plugFlow or inlet");
     c.gasAtInlet = gasModel == "inlet";
+    c.plugFlow = gasModel == "plugFlow";
     const bool withStatistics = c.circulating || in.has("statistics");
     const std::string transfer =
         in.text("transfer_coefficients", withStatistics ? "measured" : "correlation");
@@ -496,12 +505,11 @@ Case readCase(const std::string& path)
     readBatch(in, c);
     checkTarget(in, c, modelProps);
     if (c.circulating && !c.gasAtInlet)
-        for (const Region& r : c.regions)
-            if (r.path != kShared && (r.path == 0 ? c.spoutShare : 1 - c.spoutShare) < 1e-3)
-                throw InputError(c.statistics + ": key 'gas."
-                                 + (r.path == 0 ? "spoutShare" : "downcomerShare")
-                                 + "' expected at least 0.001 (region '" + r.name
-                                 + "' holds particles: its compartment needs gas)");
+        for (const auto& [key, share, region] : {std::tuple{"spoutShare", c.spoutShare, "spout"},
+                                                 std::tuple{"downcomerShare", 1 - c.spoutShare, "downcomer"}})
+            if (share < 1e-3)
+                throw InputError(c.statistics + ": key 'gas." + key + "' expected at least 0.001 (region '"
+                                 + region + "' holds particles: its compartment needs gas)");
     checkMemory(static_cast<double>(c.samples), 8.0 * (c.drying->stateSize() + 6), path, "samples");
     return c;
 }

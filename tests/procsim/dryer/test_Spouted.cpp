@@ -346,7 +346,7 @@ namespace
 Case withJet(Case c, double share)
 {
     for (Region& r : c.regions)
-        if (r.name == "entrainment") addJet(c, share, r);
+        if (r.name == "entrainment") addCore(c, "entrainment", "jet", share, r);
     transferCoefficients(c);
     return c;
 }
@@ -422,11 +422,127 @@ TEST(Spouted, TheRecycleBringsTheRestsGasBackIntoTheJet)
     for (Region& r : c.regions)
         if (r.name != "entrainment") r.h = r.km = 0;
     const Result alone = run(c);
-    c.jetRecycle = 0.05;
+    c.regions.back().intoCore = 0.05;
     const Result back = run(c);
     EXPECT_NEAR(gasTemperatureOf(c, alone, "jet"), c.inletC, 1e-9);
     EXPECT_LT(gasTemperatureOf(c, back, "jet"), c.inletC - 0.1);
     EXPECT_GT(gasTemperatureOf(c, back, "entrainment"), gasTemperatureOf(c, alone, "entrainment") + 0.1);
     EXPECT_LT(back.waterBalanceRel, 1e-6);
     EXPECT_LT(back.energyBalanceRel, 1e-6);
+}
+
+namespace
+{
+
+// the shipped case with both cores, each holding `share` of its region's
+// kernels with the region's means, and the given flows across the fountain
+// core's sides
+Case withCores(Case c, double share, double into, double out)
+{
+    for (const char* name : {"entrainment", "fountain"})
+    {
+        const Region means = c.regions[regionOf(c, name)];
+        addCore(c, name, name == std::string("fountain") ? "fountainCore" : "jet", share, means);
+    }
+    c.regions[regionOf(c, "jet")].intoCore = 0.03;
+    c.regions.back().intoCore = into;
+    c.regions.back().outOfCore = out;
+    transferCoefficients(c);
+    return c;
+}
+
+} // namespace
+
+TEST(Spouted, EveryGasCompartmentPassesOnTheDryAirItTakes)
+{
+    // in every compartment what enters leaves (to the compartments it feeds
+    // and the outlet), every region is one compartment, the outlet takes all
+    for (const Case& c : {shortBatch(10, 1), withCores(shortBatch(10, 1), 0.4, 0.02, 0.07),
+                          withCores(shortBatch(10, 1), 0.4, 0.07, 0.02)})
+    {
+        const GasNetwork n = gasNetwork(c);
+        ASSERT_EQ(n.order.size(), c.regions.size());
+        std::vector<double> in(c.regions.size(), 0.0), out(c.regions.size(), 0.0);
+        std::vector<int> seen(c.regions.size(), 0);
+        const auto take = [&](const GasInflow& f) {
+            if (f.from >= 0) out[static_cast<std::size_t>(f.from)] += f.flow;
+        };
+        for (const GasCompartment& k : n.order)
+        {
+            ++seen[k.region];
+            for (const GasInflow& f : k.in)
+            {
+                in[k.region] += f.flow;
+                take(f);
+                EXPECT_GE(f.flow, 0.0);
+            }
+        }
+        double leaving = 0;
+        for (const GasInflow& f : n.outlet)
+        {
+            take(f);
+            leaving += f.flow;
+        }
+        EXPECT_NEAR(leaving, c.airFlow, 1e-15 * c.airFlow);
+        for (std::size_t r = 0; r < c.regions.size(); ++r)
+        {
+            EXPECT_EQ(seen[r], 1) << c.regions[r].name;
+            EXPECT_NEAR(in[r], out[r], 1e-15 * c.airFlow) << c.regions[r].name;
+        }
+    }
+    // a core losing more gas across its sides than the spout brings
+    const Case c = shortBatch(10, 1);
+    EXPECT_THROW(gasNetwork(withCores(c, 0.4, 0.0, c.spoutShare + 0.01)), std::invalid_argument);
+}
+
+TEST(Spouted, TheFountainCoreTakesTheSpoutsGasItsRestTheSeepage)
+{
+    // only the spout exchanges: the fountain's core sees the spout's gas,
+    // the rest beside it the seepage (still at the inlet air) and what
+    // crosses from the core into it
+    Case c = withCores(shortBatch(2000, 1), 0.4, 0.0, 0.0);
+    for (Region& r : c.regions)
+        if (r.name != "spout") r.h = r.km = 0;
+    const auto W = [&](const Result& r, const char* name) { return r.gasW[regionOf(c, name)]; };
+    const Result apart = run(c);
+    EXPECT_GT(W(apart, "spout"), c.inletW + 1e-5);
+    EXPECT_NEAR(W(apart, "fountainCore"), W(apart, "spout"), 1e-15);
+    EXPECT_NEAR(W(apart, "downcomer"), c.inletW, 1e-15);
+    // the fountain region's kernels saw both, by their shares
+    EXPECT_NEAR(W(apart, "fountain"), 0.4 * W(apart, "spout") + 0.6 * c.inletW, 1e-12);
+    c.regions.back().outOfCore = 0.1;
+    const Result crossing = run(c);
+    const double seep = 1 - c.spoutShare, out = 0.1;
+    const double rest = (seep * c.inletW + out * W(crossing, "spout")) / (seep + out);
+    EXPECT_NEAR((W(crossing, "fountain") - 0.4 * W(crossing, "fountainCore")) / 0.6, rest, 1e-12);
+    Case exchanging = withCores(shortBatch(2000, 1), 0.4, 0.05, 0.1);
+    const Result all = run(exchanging);
+    EXPECT_LT(all.waterBalanceRel, 1e-6);
+    EXPECT_LT(all.energyBalanceRel, 1e-6);
+}
+
+TEST(Spouted, PlugFlowGasLeavesAsTheExponentialRelaxationWellMixedAsItsLimit)
+{
+    // one region of 1000 kernels at 25 C that take heat but no water, in a
+    // flow that carries as much per kelvin as they take (N = h A n /(G c_p)
+    // = 1): over the first step the outlet is T_p + (T_in - T_p) e^-N in
+    // plug flow, T_p + (T_in - T_p)/(1 + N) well mixed
+    for (const bool plug : {true, false})
+    {
+        Case c = singleKernel("freeWater", spoutlab::Parameters());
+        c.regions[0].km = 0;
+        c.gasAtInlet = false;
+        c.plugFlow = plug;
+        c.bedParticles = 1000;
+        const double A = kPi * c.diameter * c.diameter, cp = 1006 + c.inletW * 1860;
+        const double N = 1.0;
+        c.airFlow = c.bedParticles * c.regions[0].h * A / (cp * N);
+        c.duration = c.outputInterval = 0.5;
+        const Result r = run(c);
+        ASSERT_EQ(r.series.size(), 2u);
+        const double drop = plug ? std::exp(-N) : 1 / (1 + N);
+        const double expected = c.initialC + (c.inletC - c.initialC) * drop;
+        EXPECT_NEAR(r.series[1].outletC, expected, 1e-9) << (plug ? "plug flow" : "well mixed");
+        EXPECT_LT(r.energyBalanceRel, 1e-9);
+    }
 }
