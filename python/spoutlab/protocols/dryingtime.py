@@ -51,6 +51,10 @@ from spoutlab import spoutedbed
 from spoutlab.protocols import heattransfer
 
 
+
+# the predictor's gas (procsim dryer spouted's gasModel) in the consistency part
+GAS_MODEL = 'plugFlow'
+
 def options(argv):
     def extra(p):
         p.add_argument('--part', choices=('statistics', 'consistency'), default='statistics',
@@ -178,7 +182,12 @@ def predictor_case(g, o, work, n, window, bin_width):
         '  fountain: {heatTransferModel: %s}' % spout,
         '  downcomer: {heatTransferModel: %s}' % down,
         '  entrainment: {heatTransferModel: %s}' % down,
-        'gasModel: compartments',
+        # the gas through each compartment as a plug: the jet's and the
+        # spout's gas rises through them in milliseconds, hardly mixed back,
+        # and their kernels see it on its way, not only as it leaves (as
+        # well-mixed compartments have it: the two coincide where the gas
+        # takes up the kernels' temperature, the downcomer)
+        'gasModel: %s' % GAS_MODEL,
         'target_moisture_wb_percent: 0.5',
         'stop_at_target: no',
         'kernel_temperature_limit_C: 60',
@@ -225,7 +234,7 @@ def run_predictor(out):
     os.makedirs(inlet, exist_ok=True)
     with open(os.path.join(out, 'case.yaml')) as f, \
             open(os.path.join(inlet, 'case.yaml'), 'w') as g_:
-        g_.write(f.read().replace('gasModel: compartments', 'gasModel: inlet')
+        g_.write(f.read().replace('gasModel: ' + GAS_MODEL, 'gasModel: inlet')
                  .replace('statistics: ../', 'statistics: ../../')
                  .replace('initial_state: ', 'initial_state: ../'))
     with open(os.path.join(inlet, 'log.procsim'), 'w') as log:
@@ -247,7 +256,9 @@ def region_comparison(out, stats, lines):
         for line in f:
             v = dict(zip(head, line.strip().split(',')))
             cond = stats['conditions']
-            cfd = cond['entrainment']['jet'] if v['region'] == 'jet' else cond[v['region']]
+            cores = {'jet': ('entrainment', 'jet'), 'fountainCore': ('fountain', 'core')}
+            where = cores.get(v['region'])
+            cfd = cond[where[0]][where[1]] if where else cond[v['region']]
             regions[v['region']] = dict(
                 holdup=(float(v['holdup_share_predicted']), float(v['holdup_share_file'])),
                 km=(float(v['km_m_per_s']), cfd['km']), h=(float(v['h_W_per_m2K']), cfd['h']),
@@ -315,7 +326,7 @@ def consistency(o):
     spread_pred = float(summ['X_final_std_percent_db']) / 100
     r = dict(run=work, u_s=o['u'], time=o['time'], window_start=start, window=window,
              particles=n, samples=o['copies'] * n, drying_model=g.dryingModel,
-             T_in=g.Tin, W_in=g.inletW, X0=g.X0, Hd=g.Hd / 1000,
+             T_in=g.Tin, W_in=g.inletW, X0=g.X0, Hd=g.Hd / 1000, gas_model=GAS_MODEL,
              X_start=x0, X_end_direct=x1, X_end_predictor=pred[-1][1],
              spread_start=s0, spread_direct=s1, spread_predictor=spread_pred,
              rate_direct=rate_direct, rate_predictor=rate_pred,

@@ -634,9 +634,10 @@ def drytime_section(case):
     if c:
         settings = ('%d particles, draft plates at Hd = %g m, u_s = %g m/s, inlet %.0f C (W %g), '
                     '%s from X_0 %.4g; window %g s from t = %g s; predictor %d samples from the '
-                    "kernels at the window's start, the run's own statistics"
+                    "kernels at the window's start, the run's own statistics, gasModel %s"
                     % (c['particles'], c['Hd'], c['u_s'], c['T_in'] - 273.15, c['W_in'],
-                       c['drying_model'], c['X0'], c['window'], c['window_start'], c['samples']))
+                       c['drying_model'], c['X0'], c['window'], c['window_start'], c['samples'],
+                       c.get('gas_model', 'compartments')))
         wall = '%.2f h' % (c['wall_s'] / 3600)
         rows += [('bed-mean drying rate over the window, predictor / direct CFD-DEM',
                   '%.4g / %.4g kg/kg d.b. per s: %+.1f %%'
@@ -652,8 +653,8 @@ def drytime_section(case):
                          '; '.join('%s %.0f / %.0f, %.4f / %.4f'
                                    % ((k,) + tuple(c['regions'][k]['Tgas_C'])
                                       + tuple(c['regions'][k]['W']))
-                                   for k in ('spout', 'fountain', 'downcomer', 'entrainment',
-                                             'jet') if k in c['regions'])
+                                   for k in ('spout', 'fountain', 'fountainCore', 'downcomer',
+                                             'entrainment', 'jet') if k in c['regions'])
                          + '; unlimited air %.2f x the direct rate'
                          % (c['rate_unlimited_air'] / c['rate_direct']), '', settings, wall))
         if 'rate_region_means' in c:
