@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace spoutlab
 {
@@ -174,6 +175,7 @@ void DemCoupling::startDem()
     );
     if (Foam::Pstream::parRun()) matchDecomposition(mesh_, *dem_, locator_);
     resumeStepState();
+    nParticles_ = dem_->nParticles();
     Foam::Info<< "LIGGGHTS: " << dem_->nParticles() << " particles from "
         << liggghtsInput_.c_str() << ", DEM time step " << dem_->timeStep()
         << " s" << Foam::endl;
@@ -244,9 +246,29 @@ void DemCoupling::startFromBed()
 void DemCoupling::evolve()
 {
     dem_->run(couplingInterval_);
+    checkAtomsKept();
     vf_ = mapParticles();
     exchange(vf_);
     if (thermal_) thermal_->dry(*dem_, particles_, vf_.map, g_, guards_);
+}
+
+
+void DemCoupling::checkAtomsKept()
+{
+    // LIGGGHTS drops an atom whose centre leaves its box (boundary f f f,
+    // 'thermo_modify lost warn' only warns): a particle striking a soft
+    // wall on the box's face faster than r sqrt(k/m) passes it by more than
+    // its radius and is gone before spoutFoam can see it outside the mesh
+    const long n = dem_->nParticles();
+    if (n == nParticles_) return;
+    const long gone = nParticles_ - n;
+    nParticles_ = n;
+    const std::string what =
+        std::to_string(gone) + " particle(s) lost by LIGGGHTS (centre out of its box, "
+        "e.g. through a wall on the box's face) at t = " + mesh_.time().timeName() + " s";
+    if (!deleteLost_) throw std::runtime_error(what);
+    Foam::Info<< "spoutFoam: " << what.c_str() << "; the run goes on without them "
+        "(lostParticles delete)" << Foam::endl;
 }
 
 
@@ -276,6 +298,7 @@ void DemCoupling::deleteLost(VoidFractionResult& vf)
     if (lost.empty()) return;
     dem_->deleteParticles(lost);
     dem_->localParticles(particles_);
+    nParticles_ = dem_->nParticles();
     vf = voidFractionModel_->compute(locator_, particles_);
 }
 
