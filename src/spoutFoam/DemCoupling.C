@@ -260,9 +260,9 @@ void DemCoupling::checkAtomsKept()
     // wall on the box's face faster than r sqrt(k/m) passes it by more than
     // its radius and is gone before spoutFoam can see it outside the mesh
     const long n = dem_->nParticles();
-    if (n == nParticles_) return;
     const long gone = nParticles_ - n;
     nParticles_ = n;
+    if (gone <= 0) return; // none lost (more: a fix insert in the input)
     const std::string what =
         std::to_string(gone) + " particle(s) lost by LIGGGHTS (centre out of its box, "
         "e.g. through a wall on the box's face) at t = " + mesh_.time().timeName() + " s";
