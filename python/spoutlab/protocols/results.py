@@ -172,8 +172,7 @@ def coarse_section(case, csv_path):
         sys.exit('results: %s: coarseGraining 1, expected a coarse-grained run (the cg = 1 '
                  'run is UMS_DIR)' % os.path.join(case, 'constant', 'spoutedBed'))
     name = 'cg%g' % cg
-    ref = {row['key']: row['value'] for row in csv.DictReader(open(csv_path))} \
-        if os.path.isfile(csv_path) else {}
+    ref = reference_values(csv_path)
     settings = '%s; coarseGraining %g (parcels of %g^3 particles)' % (r.settings, cg, cg)
     rows, keys = [], []
     for key, what, value, unit in (
@@ -197,6 +196,100 @@ def coarse_section(case, csv_path):
                  '%.2f h' % r.hours))
     return name, rows + r.loop_rows() + r.branch_rows(), keys, \
         [('ums.png', 'coarse_%s_pressure_drop.png' % name)]
+
+
+def reference_values(csv_path):
+    """key -> value of the results.csv beside the figures (the cg = 1 rows)."""
+    return {row['key']: row['value'] for row in csv.DictReader(open(csv_path))} \
+        if os.path.isfile(csv_path) else {}
+
+
+def against_one(name, key, what, value, unit, one, settings, wall, fmt='%.4g'):
+    """A coarse-grained value beside cg = 1's (one, text of results.csv):
+    its table row and its results.csv row."""
+    departure = ' (%+.1f %% of cg = 1)' % (100 * (value / float(one) - 1)) if one else ''
+    return ((what, (fmt + ' %s%s') % (value, unit, departure), 'cg = 1: %s %s' % (one, unit),
+             settings, wall),
+            ('%s.%s' % (name, key), fmt % value, unit, one,
+             'paper_value: cg = 1; within 10 %% (issue 27); ' + settings))
+
+
+def coarse_speedup(case):
+    """protocols/coarseSpeedup's runs: the same span at cg = 1 and each
+    factor, one after the other; keys cg<N>.speedup (CPU time of cg = 1's
+    span over cg = N's)."""
+    r = read_json(case, 'speedup.json', 'protocols/coarseSpeedup with its options')
+    one = r['runs'][0]
+    rows, keys = [], []
+    for run in r['runs']:
+        span = '%g-%g s' % tuple(run['span_s'])
+        what = ('%d parcels, %d DEM steps over %s: CPU %.1f s (wall %.0f s), %.1f CPU s per '
+                'simulated s; dP %s Pa; %s; settling %.0f s apart; load average %s'
+                % (run['parcels'], run['dem_steps'], span, run['cpu_s'], run['wall_s'],
+                   run['cpu_per_simulated_s'], run['dP_Pa'],
+                   'spouts' if run['spouts'] else 'does not spout',
+                   run['settle_wall_s'], ' to '.join('%.2f' % x for x in run['load_average'])))
+        rows.append(('cost of the span, cg = %g' % run['cg'], what, '', r['settings'],
+                     '%.2f h' % (run['run_wall_s'] / 3600)))
+        if run['cg'] == 1:
+            continue
+        rows.append(('speed-up of cg = %g over cg = 1' % run['cg'],
+                     '%.2f (CPU time; wall %.2f)' % (run['speedup'], run['speedup_wall']),
+                     'at least 6 (issue 27 item 8)', r['settings'], ''))
+        keys.append(('cg%g.speedup' % run['cg'], '%.3g' % run['speedup'], '', '6',
+                     'target: at least 6 with u_ms within 10 %% (issue 27 item 8); CPU s of '
+                     'cg = 1 over cg = %g for the same span (%s, %d DEM steps): %.1f / %.1f s '
+                     '(wall %.0f / %.0f s); %s' % (run['cg'], span, run['dem_steps'],
+                                                  one['cpu_s'], run['cpu_s'], one['wall_s'],
+                                                  run['wall_s'], r['settings'])))
+    return rows, keys
+
+
+def coarse_circulation(case, ref):
+    """protocols/circulation friction run with coarseGraining > 1: W_s
+    beside cg = 1's draft.Ws_mu*_kg_s; keys cg<N>.Ws_mu<mu>_kg_s."""
+    from spoutlab import spoutedbed
+    table = read_json(case, 'circulation_friction.json',
+                      'protocols/circulation friction with its options')
+    rows, keys = [], []
+    for p in table['points']:
+        work = os.path.join(case, 'runs', p['label'])
+        cg = spoutedbed.load(work).coarseGraining
+        mu = p['label'].split('_')[0]
+        settings = 'u_s = %.2f m/s; %s; coarseGraining %g' % (p['u_m_s'], table['settings'], cg)
+        row, key = against_one('cg%g' % cg, 'Ws_%s_kg_s' % mu, 'W_s, %s, cg = %g against cg = 1'
+                               % (mu, cg), p['W_s_kg_s'], 'kg/s',
+                               ref.get('draft.Ws_%s_kg_s' % mu, ''), settings,
+                               '%.2f h' % (wall_time(work) / 3600))
+        rows.append(row)
+        keys.append(key)
+    return rows, keys
+
+
+def coarse_heat(case, ref):
+    """protocols/heatTransfer run with coarseGraining > 1: Re and h in
+    spout and downcomer beside cg = 1's heat.* values; keys cg<N>.Re_spout,
+    cg<N>.Re_downcomer, cg<N>.h_spout_W_m2K, cg<N>.h_downcomer_W_m2K."""
+    from spoutlab import spoutedbed
+    r = {row['key']: float(row['value'])
+         for row in csv.DictReader(open(os.path.join(case, 'heat.csv')))}
+    cg = spoutedbed.load(os.path.join(case, 'runs', 'heat_u%g' % r['u_s'])).coarseGraining
+    settings = ('%d particles in %d parcels (coarseGraining %g), u_s = %g m/s, inlet 150 C, '
+                'start 33 C, %g s; averaged over the last %g s (%d write times)'
+                % (r['particles'], round(r['particles'] / cg ** 3), cg, r['u_s'], r['time'],
+                   r['average'], r['samples']))
+    rows, keys = [], []
+    for key, what, value, unit in (('Re_spout', 'Re, spout', r['Re_spout'], ''),
+                                   ('Re_downcomer', 'Re, downcomer', r['Re_downcomer'], ''),
+                                   ('h_spout_W_m2K', 'h, spout', r['h_spout'], 'W/m2/K'),
+                                   ('h_downcomer_W_m2K', 'h, downcomer', r['h_downcomer'],
+                                    'W/m2/K')):
+        row, k = against_one('cg%g' % cg, key, '%s, cg = %g against cg = 1' % (what, cg), value,
+                             unit, ref.get('heat.' + key, ''), settings,
+                             '%.2f h' % (r['wall_s'] / 3600))
+        rows.append(row)
+        keys.append(k)
+    return rows, keys
 
 
 def bed3d_section(case, k):
@@ -729,8 +822,28 @@ def remove_figures(section, figure_dir):
                 os.remove(os.path.join(figure_dir, f))
 
 
+def coarse_runs_section(coarse, runs, figure_dir):
+    """The coarse-graining section from every coarse-grained case copy
+    given: minimumSpouting runs (coarse), and runs['circulation'],
+    ['heat'], ['speedup'] (rows, results.csv rows, figures)."""
+    remove_figures('coarse', figure_dir)
+    csv_path = os.path.join(os.path.dirname(figure_dir), 'results.csv')
+    ref = reference_values(csv_path)
+    rows, keys, pngs = [], [], []
+    for case in coarse:
+        _, r, k, p = coarse_section(case, csv_path)
+        rows, keys, pngs = rows + r, keys + k, pngs + copy(case, p, figure_dir)
+    for name, section in (('circulation', lambda c: coarse_circulation(c, ref)),
+                          ('heat', lambda c: coarse_heat(c, ref)),
+                          ('speedup', coarse_speedup)):
+        for case in runs.get(name, ()):
+            r, k = section(case)
+            rows, keys = rows + r, keys + k
+    return rows, keys, pngs
+
+
 def build(ums, circ, heat, figure_dir, noplates=(), maps=None, mixing=(), drying=None,
-          drytime=None, coarse=(), bed3d=()):
+          drytime=None, coarse=(), bed3d=(), coarse_runs=None):
     """section -> (table rows, results.csv rows, figure names) for the runs given."""
     new = {}
 
@@ -793,15 +906,8 @@ def build(ums, circ, heat, figure_dir, noplates=(), maps=None, mixing=(), drying
             sys.exit('results: %s: %s has no section (expected 10 000 or 26 000 particles)'
                      % (os.path.join(case, 'ums.json'), name))
         new[name] = (rows, keys, figures(name, case, pngs))
-    if coarse:
-        # one section from every coarse-grained case copy given
-        remove_figures('coarse', figure_dir)
-        rows, keys, pngs = [], [], []
-        for case in coarse:
-            _, r, k, p = coarse_section(case, os.path.join(os.path.dirname(figure_dir),
-                                                           'results.csv'))
-            rows, keys, pngs = rows + r, keys + k, pngs + copy(case, p, figure_dir)
-        new['coarse'] = (rows, keys, pngs)
+    if coarse or coarse_runs:
+        new['coarse'] = coarse_runs_section(coarse, coarse_runs or {}, figure_dir)
     if maps:
         rows, keys, pngs = maps_section(maps)
         new['maps'] = (rows, keys, figures('maps', maps, pngs))
@@ -873,6 +979,13 @@ def parse(argv):
     p.add_argument('--coarse', action='append', default=[], metavar='UMS_DIR',
                    help='a case copy where minimumSpouting ran on the draft-plate bed with '
                         'coarseGraining > 1 (repeat for several factors)')
+    for name, protocol in (('Circulation', 'circulation friction'),
+                           ('Heat', 'heatTransfer'), ('Speedup', 'coarseSpeedup')):
+        p.add_argument('--coarse' + name, action='append', default=[], metavar='DIR',
+                       help='a case copy where protocols/%s ran with coarseGraining > 1 '
+                            '(coarseSpeedup: at every factor); its rows join the coarse-'
+                            'graining section, which a call rewrites whole: give it every '
+                            '--coarse* run' % protocol)
     p.add_argument('--maps', metavar='MAPS_DIR',
                    help='a case copy where protocols/velocityMaps ran (maps.txt)')
     p.add_argument('--mixing', action='append', default=[], metavar='MIXING_DIR',
@@ -898,13 +1011,16 @@ def main(argv):
     out, cases, heat, noplates, maps, mixing = (a.out, a.cases, a.heat, a.noplates, a.maps,
                                                 a.mixing)
     if not (cases or heat or noplates or maps or mixing or a.drying or a.dryingTime
-            or a.coarse or a.bed3d):
+            or a.coarse or a.bed3d or a.coarseCirculation or a.coarseHeat
+            or a.coarseSpeedup):
         p.print_help()
         return 2
     ums = cases[0] if cases else None
     circ = cases[1] if len(cases) > 1 else None
     new = build(ums, circ, heat, os.path.join(os.path.dirname(out), 'figures'), noplates, maps,
-                mixing, a.drying, a.dryingTime, a.coarse, a.bed3d)
+                mixing, a.drying, a.dryingTime, a.coarse, a.bed3d,
+                {'circulation': a.coarseCirculation, 'heat': a.coarseHeat,
+                 'speedup': a.coarseSpeedup})
     old = old_sections(out)
     lines = ['# SpoutLab vs the source papers', '',
              'Written by `openfoam_cases/spoutDraftPlates/protocols/results` from the protocol',
