@@ -161,6 +161,22 @@ def ums_rows(case):
     return rows + r.loop_rows() + r.umf_row(), (None if bound else r.u_ms)
 
 
+def coarse_failure(case, r, cg):
+    """Why a coarse-grained bed may not spout, in its own numbers: parcels
+    across the slab's depth, the settled voidage, and dP at the highest
+    step against the bed's weight per area."""
+    from spoutlab import spoutedbed
+    g = spoutedbed.load(case)
+    p = g.particles
+    weight = p['nParticles'] * p['rhop'] * math.pi / 6 * (p['dp'] / 1000) ** 3 * 9.81 \
+        / (g.W * g.Lb / 1e6)
+    top = [s for s in r.steps if s[1] != 'spinup'][-1]
+    return ('%.1f parcels of %g mm across the %g mm depth; settled voidage %.3f; dP %.2f kPa '
+            'at %g m/s (the highest step), %.0f %% of the bed weight per area (%.2f kPa)'
+            % (g.Lb / (cg * p['dp']), cg * p['dp'], g.Lb, r.umf_eps[0], top[2] / 1000,
+               top[0], 100 * top[2] / weight, weight / 1000))
+
+
 def coarse_section(case, csv_path):
     """The draft-plate bed coarse-grained (issue 27): protocols/minimumSpouting
     in a case copy with coarseGraining = cg, beside the cg = 1 values
@@ -175,16 +191,25 @@ def coarse_section(case, csv_path):
     ref = reference_values(csv_path)
     settings = '%s; coarseGraining %g (parcels of %g^3 particles)' % (r.settings, cg, cg)
     rows, keys = [], []
+    why = coarse_failure(case, r, cg)
     for key, what, value, unit in (
             ('u_ms_m_s', 'u_ms, draft plates', r.u_ms, 'm/s'),
             ('dP_ms_kPa', 'dP at u_ms', r.dp_ms / 1000 if r.dp_ms else None, 'kPa')):
         one = ref.get('draft.' + key, '')
         if value is None or r.u_ms_bound:
-            rows.append((what + ', cg = %g' % cg, 'none: no spouting step on the decreasing '
-                         'branch' if value is None else 'only bounded', one, settings,
-                         '%.2f h' % r.hours))
-            keys.append(('%s.%s' % (name, key), '', unit, one, 'cg = 1: draft.%s; ' % key
-                         + settings))
+            # no u_ms: the key holds what was measured instead, the break-through
+            seen = (r.break_through if key == 'u_ms_m_s' else
+                    [dp / 1000 for u, b, dp, _ in r.steps if b == 'packed'
+                     and abs(u - r.break_through) < 1e-6][0]) if r.break_through else None
+            rows.append((what + ', cg = %g' % cg, ('none: no spouting step on the decreasing '
+                         'branch' if value is None else 'only bounded')
+                         + ('; the one spouting step, the break-through: %.4g %s'
+                            % (seen, unit) if seen is not None else '') + '; ' + why,
+                         'cg = 1: %s %s' % (one, unit), settings, '%.2f h' % r.hours))
+            keys.append(('%s.%s' % (name, key), '' if seen is None else '%.4g' % seen, unit, one,
+                         'NOT u_ms: no decreasing branch, the value is the increasing branch\'s '
+                         'break-through (its one spouting step); %s; cg = 1: draft.%s; %s'
+                         % (why, key, settings)))
             continue
         departure = ' (%+.1f %% of cg = 1)' % (100 * (value / float(one) - 1)) if one else ''
         rows.append((what + ', cg = %g against cg = 1' % cg,
@@ -326,6 +351,31 @@ def bed3d_section(case, k):
     figs = [('ums.png', 'bed3d_pressure_drop%s.png' % tag)]
     figs += [(f, 'bed3d_%s%s.png' % (f[len('snapshot_'):-4], tag))
              for f in sorted(os.listdir(case)) if f.startswith('snapshot_') and f.endswith('.png')]
+    return rows, keys, figs
+
+
+def bed3d_coarse_section(case, ref):
+    """protocols/minimumSpouting3D run with coarseGraining > 1: the 3-D
+    bed's rows, keyed bed3d.cg<N>.*, beside cg = 1's bed3d.* values (where
+    the parcels are many across the bed, unlike the draft-plate slab)."""
+    from spoutlab import spoutedbed3d
+    cg = spoutedbed3d.load(case).coarseGraining
+    rows, keys, figs = bed3d_section(case, 0)
+    name = 'bed3d.cg%g' % cg
+    rows = [(q + ', cg = %g' % cg, v, p, s + '; coarseGraining %g' % cg, w)
+            for q, v, p, s, w in rows]
+    for key, what, unit in (('u_ms_m_s', 'u_ms', 'm/s'), ('dP_ms_kPa', 'dP_ms', 'kPa')):
+        mine = [k for k in keys if k[0] == 'bed3d.' + key]
+        one = ref.get('bed3d.' + key, '')
+        if mine and one:
+            value = float(mine[0][1])
+            rows.append(('%s, 3-D bed, cg = %g against cg = 1' % (what, cg), '%.4g %s (%+.1f %%)'
+                         % (value, unit, 100 * (value / float(one) - 1)),
+                         'cg = 1: %s %s (bed3d.%s)' % (one, unit, key), rows[0][3], rows[0][4]))
+    keys = [(name + k[0][len('bed3d'):], k[1], k[2], k[3],
+             '%s; cg = 1: bed3d%s %s; coarseGraining %g'
+             % (k[4], k[0][len('bed3d'):], ref.get(k[0], ''), cg)) for k in keys]
+    figs = [(f, 'bed3dcg%g_%s' % (cg, to[len('bed3d_'):])) for f, to in figs]
     return rows, keys, figs
 
 
@@ -783,6 +833,7 @@ SECTIONS = [
                'Figs 5-6)'),
     ('bed3d', 'Three-dimensional spouted bed: u_ms and dP_ms against Mathur and Gishler '
               '(issue 27 item 4)'),
+    ('bed3dcoarse', 'Three-dimensional spouted bed coarse-grained against cg = 1 (issue 27)'),
 ]
 CSV_HEADER = ['key', 'value', 'unit', 'paper_value', 'note']
 
@@ -798,6 +849,8 @@ def section_of_key(key):
         return 'coarse'
     if key.startswith('mixing'):
         return 'mixing'
+    if re.match(r'bed3d\.cg[\d.]+\.', key):
+        return 'bed3dcoarse'
     if key.startswith('bed3d'):
         return 'bed3d'
     if key.startswith('draft.Ws_He'):
@@ -811,7 +864,8 @@ FIGURES = {'ums': ('fig2_', 'fig3_'), 'friction': ('fig7_',), 'velocity': ('fig6
            'profiles': ('fig4_5_',), 'heat': ('fig11_', 'fig12_'), 'drying': ('drying_',),
            'drytime': ('drytime_',), 'coarse': ('coarse_',),
            'noplates10k': ('noplates10k_',), 'noplates26k': ('noplates26k_',),
-           'maps': ('noplates_maps_',), 'mixing': ('mixing_',), 'bed3d': ('bed3d_',)}
+           'maps': ('noplates_maps_',), 'mixing': ('mixing_',), 'bed3d': ('bed3d_',),
+           'bed3dcoarse': ('bed3dcg',)}
 
 
 def remove_figures(section, figure_dir):
@@ -906,8 +960,9 @@ def build(ums, circ, heat, figure_dir, noplates=(), maps=None, mixing=(), drying
             sys.exit('results: %s: %s has no section (expected 10 000 or 26 000 particles)'
                      % (os.path.join(case, 'ums.json'), name))
         new[name] = (rows, keys, figures(name, case, pngs))
-    if coarse or coarse_runs:
-        new['coarse'] = coarse_runs_section(coarse, coarse_runs or {}, figure_dir)
+    runs = coarse_runs or {}
+    if coarse or runs.get('circulation') or runs.get('heat') or runs.get('speedup'):
+        new['coarse'] = coarse_runs_section(coarse, runs, figure_dir)
     if maps:
         rows, keys, pngs = maps_section(maps)
         new['maps'] = (rows, keys, figures('maps', maps, pngs))
@@ -926,6 +981,14 @@ def build(ums, circ, heat, figure_dir, noplates=(), maps=None, mixing=(), drying
             r, kk, p = bed3d_section(case, k)
             rows, keys, pngs = rows + r, keys + kk, pngs + copy(case, p, figure_dir)
         new['bed3d'] = (rows, keys, pngs)
+    if runs.get('bed3d'):
+        remove_figures('bed3dcoarse', figure_dir)
+        ref = reference_values(os.path.join(os.path.dirname(figure_dir), 'results.csv'))
+        rows, keys, pngs = [], [], []
+        for case in runs['bed3d']:
+            r, k, p = bed3d_coarse_section(case, ref)
+            rows, keys, pngs = rows + r, keys + k, pngs + copy(case, p, figure_dir)
+        new['bed3dcoarse'] = (rows, keys, pngs)
     return new
 
 
@@ -979,6 +1042,9 @@ def parse(argv):
     p.add_argument('--coarse', action='append', default=[], metavar='UMS_DIR',
                    help='a case copy where minimumSpouting ran on the draft-plate bed with '
                         'coarseGraining > 1 (repeat for several factors)')
+    p.add_argument('--bed3dCoarse', action='append', default=[], metavar='UMS3D_DIR',
+                   help='a copy of openfoam_cases/spoutedBed3D where protocols/'
+                        'minimumSpouting3D ran with coarseGraining > 1 (keys bed3d.cg<N>.*)')
     for name, protocol in (('Circulation', 'circulation friction'),
                            ('Heat', 'heatTransfer'), ('Speedup', 'coarseSpeedup')):
         p.add_argument('--coarse' + name, action='append', default=[], metavar='DIR',
@@ -1012,7 +1078,7 @@ def main(argv):
                                                 a.mixing)
     if not (cases or heat or noplates or maps or mixing or a.drying or a.dryingTime
             or a.coarse or a.bed3d or a.coarseCirculation or a.coarseHeat
-            or a.coarseSpeedup):
+            or a.coarseSpeedup or a.bed3dCoarse):
         p.print_help()
         return 2
     ums = cases[0] if cases else None
@@ -1020,7 +1086,7 @@ def main(argv):
     new = build(ums, circ, heat, os.path.join(os.path.dirname(out), 'figures'), noplates, maps,
                 mixing, a.drying, a.dryingTime, a.coarse, a.bed3d,
                 {'circulation': a.coarseCirculation, 'heat': a.coarseHeat,
-                 'speedup': a.coarseSpeedup})
+                 'speedup': a.coarseSpeedup, 'bed3d': a.bed3dCoarse})
     old = old_sections(out)
     lines = ['# SpoutLab vs the source papers', '',
              'Written by `openfoam_cases/spoutDraftPlates/protocols/results` from the protocol',
