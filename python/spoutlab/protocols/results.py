@@ -377,11 +377,16 @@ def bed3d_coarse_section(case, ref):
     bed's rows, keyed bed3d.cg<N>.*, beside cg = 1's bed3d.* values (where
     the parcels are many across the bed, unlike the draft-plate slab)."""
     from spoutlab import spoutedbed3d
-    cg = spoutedbed3d.load(case).coarseGraining
+    g3 = spoutedbed3d.load(case)
+    cg = g3.coarseGraining
     rows, keys, figs = bed3d_section(case, 0)
     name = 'bed3d.cg%g' % cg
-    rows = [(q + ', cg = %g' % cg, v, p, s + '; coarseGraining %g' % cg, w)
-            for q, v, p, s, w in rows]
+    u = read_json(case, 'ums.json', 'protocols/minimumSpouting3D')
+    across = ('coarseGraining %g: parcels of %g mm, %.1f across the inlet, %.1f across the '
+              'column' % (cg, cg * g3.particles['dp'], 1000 * u['D_i_m'] / (cg * g3.particles['dp']),
+                          1000 * u['D_c_m'] / (cg * g3.particles['dp'])))
+    rows = [(q + ', cg = %g' % cg, v, p, s.replace(' particles (', ' parcels (', 1) + '; ' + across,
+             w) for q, v, p, s, w in rows]
     for key, what, unit in (('u_ms_m_s', 'u_ms', 'm/s'), ('dP_ms_kPa', 'dP_ms', 'kPa')):
         mine = [k for k in keys if k[0] == 'bed3d.' + key]
         one = ref.get('bed3d.' + key, '')
@@ -391,8 +396,8 @@ def bed3d_coarse_section(case, ref):
                          % (value, unit, 100 * (value / float(one) - 1)),
                          'cg = 1: %s %s (bed3d.%s)' % (one, unit, key), rows[0][3], rows[0][4]))
     keys = [(name + k[0][len('bed3d'):], k[1], k[2], k[3],
-             '%s; cg = 1: bed3d%s %s; coarseGraining %g'
-             % (k[4], k[0][len('bed3d'):], ref.get(k[0], ''), cg)) for k in keys]
+             '%s; cg = 1: bed3d%s %s; %s'
+             % (k[4], k[0][len('bed3d'):], ref.get(k[0], ''), across)) for k in keys]
     figs = [(f, 'bed3dcg%g_%s' % (cg, to[len('bed3d_'):])) for f, to in figs]
     return rows, keys, figs
 
