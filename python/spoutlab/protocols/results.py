@@ -231,7 +231,14 @@ def reference_values(csv_path):
 
 def against_one(name, key, what, value, unit, one, settings, wall, fmt='%.4g'):
     """A coarse-grained value beside cg = 1's (one, text of results.csv):
-    its table row and its results.csv row."""
+    its table row and its results.csv row; a value that is not a number
+    (no parcels where it is averaged) is said so."""
+    if math.isnan(value):
+        return ((what, 'none: no parcels where it is averaged (the region is empty)',
+                 'cg = 1: %s %s' % (one, unit), settings, wall),
+                ('%s.%s' % (name, key), '', unit, one,
+                 'no value: no parcels where it is averaged (the region is empty); why the '
+                 'slab fails at this cg: %s.u_ms_m_s; %s' % (name, settings)))
     departure = ' (%+.1f %% of cg = 1)' % (100 * (value / float(one) - 1)) if one else ''
     return ((what, (fmt + ' %s%s') % (value, unit, departure), 'cg = 1: %s %s' % (one, unit),
              settings, wall),
@@ -319,7 +326,7 @@ def coarse_heat(case, ref):
     cg = spoutedbed.load(os.path.join(case, 'runs', 'heat_u%g' % r['u_s'])).coarseGraining
     settings = ('%d particles in %d parcels (coarseGraining %g), u_s = %g m/s, inlet 150 C, '
                 'start 33 C, %g s; averaged over the last %g s (%d write times)'
-                % (r['particles'], round(r['particles'] / cg ** 3), cg, r['u_s'], r['time'],
+                % (r['particles'], math.floor(r['particles'] / cg ** 3 + 0.5), cg, r['u_s'], r['time'],
                    r['average'], r['samples']))
     rows, keys = [], []
     for key, what, value, unit in (('Re_spout', 'Re, spout', r['Re_spout'], ''),
