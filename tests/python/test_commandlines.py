@@ -12,13 +12,13 @@ import tempfile
 import unittest
 
 from spoutlab.protocols import circulation, drying, dryingtime, heattransfer, minimumspouting
-from spoutlab.protocols import mixing, profiles, results, velocitymaps
+from spoutlab.protocols import coarsespeedup, mixing, profiles, results, velocitymaps
 
 REPOSITORY = os.path.abspath(os.environ.get('SPOUTLAB_DIR', '../..'))
 COMMANDS = ['generate', 'inletVelocity', 'evaluate'] + [
     os.path.join('protocols', p) for p in ('minimumSpouting', 'circulation', 'profiles',
                                           'velocityMaps', 'heatTransfer', 'drying', 'results',
-                                          'mixing', 'dryingTime')]
+                                          'mixing', 'dryingTime', 'coarseSpeedup')]
 CASE = None
 
 
@@ -153,6 +153,20 @@ class Defaults(unittest.TestCase):
         self.assertEqual((a.cases, a.heat, a.noplates, a.maps, a.mixing, a.drying, a.dryingTime,
                           a.coarse, a.out),
                          (['ums', 'circ'], 'h', ['a', 'b'], None, ['m'], 'd', 't', ['c2'], 'out.md'))
+        _, a = results.parse(['--coarse', 'c2', '--coarseCirculation', 'w2', '--coarseHeat',
+                              'h2', '--coarseSpeedup', 's'])
+        self.assertEqual((a.coarse, a.coarseCirculation, a.coarseHeat, a.coarseSpeedup),
+                         (['c2'], ['w2'], ['h2'], ['s']))
+
+    def test_coarse_speedup(self):
+        o = coarsespeedup.options([])
+        self.assertEqual((o['cg'], o['u'], o['spinup'], o['span'], o['overrides']),
+                         ([2.0], 2.0, 0.6, 0.9, []))
+        o = coarsespeedup.options(['--cg', '2,3', 'mu=0.063'])
+        self.assertEqual((o['cg'], o['overrides']), ([2.0, 3.0], ['mu=0.063']))
+        for bad in (['--cg', '1'], ['coarseGraining=2'], ['--span', '0']):
+            with self.subTest(args=bad), self.assertRaises(SystemExit):
+                coarsespeedup.options(bad)
 
     def test_mixing(self):
         a = mixing.parse(['-j', '2', 'e=0.8'])

@@ -28,6 +28,9 @@ COMMANDS = {
                '(draft-plate paper section 4.7 conditions)'),
     'dryingTime': ('dryingtime', 'what the long-time drying predictor takes from the '
                    'CFD-DEM: circulation statistics of the bed with draft plates'),
+    'coarseSpeedup': ('coarsespeedup', 'the draft-plate bed coarse-grained against cg = 1: '
+                      'the same span of spouting at each factor, one after the other, timed '
+                      '(issue 27 item 8)'),
     'results': ('results', "the protocol outputs collected into docs/RESULTS.md and "
                 "docs/results.csv beside the papers' values"),
 }

@@ -161,6 +161,22 @@ def ums_rows(case):
     return rows + r.loop_rows() + r.umf_row(), (None if bound else r.u_ms)
 
 
+def coarse_failure(case, r, cg):
+    """Why a coarse-grained bed may not spout, in its own numbers: parcels
+    across the slab's depth, the settled voidage, and dP at the highest
+    step against the bed's weight per area."""
+    from spoutlab import spoutedbed
+    g = spoutedbed.load(case)
+    p = g.particles
+    weight = p['nParticles'] * p['rhop'] * math.pi / 6 * (p['dp'] / 1000) ** 3 * 9.81 \
+        / (g.W * g.Lb / 1e6)
+    top = [s for s in r.steps if s[1] != 'spinup'][-1]
+    return ('%.1f parcels of %g mm across the %g mm depth; settled voidage %.3f; dP %.2f kPa '
+            'at %g m/s (the highest step), %.0f %% of the bed weight per area (%.2f kPa)'
+            % (g.Lb / (cg * p['dp']), cg * p['dp'], g.Lb, r.umf_eps[0], top[2] / 1000,
+               top[0], 100 * top[2] / weight, weight / 1000))
+
+
 def coarse_section(case, csv_path):
     """The draft-plate bed coarse-grained (issue 27): protocols/minimumSpouting
     in a case copy with coarseGraining = cg, beside the cg = 1 values
@@ -172,20 +188,28 @@ def coarse_section(case, csv_path):
         sys.exit('results: %s: coarseGraining 1, expected a coarse-grained run (the cg = 1 '
                  'run is UMS_DIR)' % os.path.join(case, 'constant', 'spoutedBed'))
     name = 'cg%g' % cg
-    ref = {row['key']: row['value'] for row in csv.DictReader(open(csv_path))} \
-        if os.path.isfile(csv_path) else {}
+    ref = reference_values(csv_path)
     settings = '%s; coarseGraining %g (parcels of %g^3 particles)' % (r.settings, cg, cg)
     rows, keys = [], []
+    why = coarse_failure(case, r, cg)
     for key, what, value, unit in (
             ('u_ms_m_s', 'u_ms, draft plates', r.u_ms, 'm/s'),
             ('dP_ms_kPa', 'dP at u_ms', r.dp_ms / 1000 if r.dp_ms else None, 'kPa')):
         one = ref.get('draft.' + key, '')
         if value is None or r.u_ms_bound:
-            rows.append((what + ', cg = %g' % cg, 'none: no spouting step on the decreasing '
-                         'branch' if value is None else 'only bounded', one, settings,
-                         '%.2f h' % r.hours))
-            keys.append(('%s.%s' % (name, key), '', unit, one, 'cg = 1: draft.%s; ' % key
-                         + settings))
+            # no u_ms: the key holds what was measured instead, the break-through
+            seen = (r.break_through if key == 'u_ms_m_s' else
+                    [dp / 1000 for u, b, dp, _ in r.steps if b == 'packed'
+                     and abs(u - r.break_through) < 1e-6][0]) if r.break_through else None
+            rows.append((what + ', cg = %g' % cg, ('none: no spouting step on the decreasing '
+                         'branch' if value is None else 'only bounded')
+                         + ('; the one spouting step, the break-through: %.4g %s'
+                            % (seen, unit) if seen is not None else '') + '; ' + why,
+                         'cg = 1: %s %s' % (one, unit), settings, '%.2f h' % r.hours))
+            keys.append(('%s.%s' % (name, key), '' if seen is None else '%.4g' % seen, unit, one,
+                         'NOT u_ms: no decreasing branch, the value is the increasing branch\'s '
+                         'break-through (its one spouting step); %s; cg = 1: draft.%s; %s'
+                         % (why, key, settings)))
             continue
         departure = ' (%+.1f %% of cg = 1)' % (100 * (value / float(one) - 1)) if one else ''
         rows.append((what + ', cg = %g against cg = 1' % cg,
@@ -197,6 +221,125 @@ def coarse_section(case, csv_path):
                  '%.2f h' % r.hours))
     return name, rows + r.loop_rows() + r.branch_rows(), keys, \
         [('ums.png', 'coarse_%s_pressure_drop.png' % name)]
+
+
+def reference_values(csv_path):
+    """key -> value of the results.csv beside the figures (the cg = 1 rows)."""
+    return {row['key']: row['value'] for row in csv.DictReader(open(csv_path))} \
+        if os.path.isfile(csv_path) else {}
+
+
+def against_one(name, key, what, value, unit, one, settings, wall, fmt='%.4g'):
+    """A coarse-grained value beside cg = 1's (one, text of results.csv):
+    its table row and its results.csv row; a value that is not a number
+    (no parcels where it is averaged) is said so."""
+    if math.isnan(value):
+        return ((what, 'none: no parcels where it is averaged (the region is empty)',
+                 'cg = 1: %s %s' % (one, unit), settings, wall),
+                ('%s.%s' % (name, key), '', unit, one,
+                 'no value: no parcels where it is averaged (the region is empty); why the '
+                 'slab fails at this cg: %s.u_ms_m_s; %s' % (name, settings)))
+    departure = ' (%+.1f %% of cg = 1)' % (100 * (value / float(one) - 1)) if one else ''
+    return ((what, (fmt + ' %s%s') % (value, unit, departure), 'cg = 1: %s %s' % (one, unit),
+             settings, wall),
+            ('%s.%s' % (name, key), fmt % value, unit, one,
+             'paper_value: cg = 1; within 10 %% (issue 27)%s; %s'
+             % ('' if not one or abs(value / float(one) - 1) <= 0.1 else
+                ': outside it; why the slab fails at this cg: %s.u_ms_m_s' % name, settings)))
+
+
+def coarse_speedup(case):
+    """protocols/coarseSpeedup's runs: the same span at cg = 1 and each
+    factor, one after the other; keys cg<N>.speedup (CPU time of cg = 1's
+    span over cg = N's)."""
+    r = read_json(case, 'speedup.json', 'protocols/coarseSpeedup with its options')
+    one = r['runs'][0]
+    rows, keys = [], []
+    for run in r['runs']:
+        span = '%g-%g s' % tuple(run['span_s'])
+        what = ('%d parcels, %d DEM steps over %s: CPU %.1f s (wall %.0f s), %.1f CPU s per '
+                'simulated s; dP %s Pa; %s; settling %.0f s apart; load average %s'
+                % (run['parcels'], run['dem_steps'], span, run['cpu_s'], run['wall_s'],
+                   run['cpu_per_simulated_s'], run['dP_Pa'],
+                   'spouts' if run['spouts'] else 'does not spout',
+                   run['settle_wall_s'], ' to '.join('%.2f' % x for x in run['load_average'])))
+        rows.append(('cost of the span, cg = %g' % run['cg'], what, '', r['settings'],
+                     '%.2f h' % (run['run_wall_s'] / 3600)))
+        if run['cg'] == 1:
+            continue
+        # CPU per simulated s = fixed + per parcel: the two runs give both
+        per = (one['cpu_per_simulated_s'] - run['cpu_per_simulated_s']) \
+            / (one['parcels'] - run['parcels'])
+        fixed = run['cpu_per_simulated_s'] - per * run['parcels']
+        rows.append(('CPU s per simulated s independent of the parcels (gas, per-step '
+                     'overheads; the line through both runs), cg = %g' % run['cg'],
+                     '%.1f s (%.0f %% of cg = %g\'s) and %.2f ms more per parcel, each per simulated s: at most %.1fx '
+                     'faster than cg = 1 with this time step, however few the parcels'
+                     % (fixed, 100 * fixed / run['cpu_per_simulated_s'], run['cg'],
+                        1000 * per, one['cpu_per_simulated_s'] / fixed),
+                     '', r['settings'], ''))
+        rows.append(('speed-up of cg = %g over cg = 1' % run['cg'],
+                     '%.2f (CPU time; wall %.2f)' % (run['speedup'], run['speedup_wall']),
+                     'at least 6 (issue 27 item 8)', r['settings'], ''))
+        keys.append(('cg%g.speedup' % run['cg'], '%.3g' % run['speedup'], '', '6',
+                     'target: at least 6 with u_ms within 10 %% (issue 27 item 8); CPU s of '
+                     'cg = 1 over cg = %g for the same span (%s, %d DEM steps): %.1f / %.1f s '
+                     '(wall %.0f / %.0f s); %s' % (run['cg'], span, run['dem_steps'],
+                                                  one['cpu_s'], run['cpu_s'], one['wall_s'],
+                                                  run['wall_s'], r['settings'])))
+    return rows, keys
+
+
+def coarse_circulation(case, ref):
+    """protocols/circulation friction run with coarseGraining > 1: W_s
+    beside cg = 1's draft.Ws_mu*_kg_s; keys cg<N>.Ws_mu<mu>_kg_s."""
+    from spoutlab import spoutedbed
+    table = read_json(case, 'circulation_friction.json',
+                      'protocols/circulation friction with its options')
+    rows, keys, figs = [], [], []
+    for p in table['points']:
+        work = os.path.join(case, 'runs', p['label'])
+        cg = spoutedbed.load(work).coarseGraining
+        mu = p['label'].split('_')[0]
+        settings = 'u_s = %.2f m/s; %s; coarseGraining %g' % (p['u_m_s'], table['settings'], cg)
+        row, key = against_one('cg%g' % cg, 'Ws_%s_kg_s' % mu, 'W_s, %s, cg = %g against cg = 1'
+                               % (mu, cg), p['W_s_kg_s'], 'kg/s',
+                               ref.get('draft.Ws_%s_kg_s' % mu, ''), settings,
+                               '%.2f h' % (wall_time(work) / 3600))
+        rows.append(row)
+        keys.append(key)
+        shots = sorted(f for f in os.listdir(work) if f.startswith('snapshot_')
+                       and f.endswith('.png'))
+        if shots:      # the last, where the bed stands at the end of the run
+            figs.append((os.path.join('runs', p['label'], shots[-1]),
+                         'coarse_cg%g_%s_end.png' % (cg, p['label'])))
+    return rows, keys, figs
+
+
+def coarse_heat(case, ref):
+    """protocols/heatTransfer run with coarseGraining > 1: Re and h in
+    spout and downcomer beside cg = 1's heat.* values; keys cg<N>.Re_spout,
+    cg<N>.Re_downcomer, cg<N>.h_spout_W_m2K, cg<N>.h_downcomer_W_m2K."""
+    from spoutlab import spoutedbed
+    r = {row['key']: float(row['value'])
+         for row in csv.DictReader(open(os.path.join(case, 'heat.csv')))}
+    cg = spoutedbed.load(os.path.join(case, 'runs', 'heat_u%g' % r['u_s'])).coarseGraining
+    settings = ('%d particles in %d parcels (coarseGraining %g), u_s = %g m/s, inlet 150 C, '
+                'start 33 C, %g s; averaged over the last %g s (%d write times)'
+                % (r['particles'], math.floor(r['particles'] / cg ** 3 + 0.5), cg, r['u_s'], r['time'],
+                   r['average'], r['samples']))
+    rows, keys = [], []
+    for key, what, value, unit in (('Re_spout', 'Re, spout', r['Re_spout'], ''),
+                                   ('Re_downcomer', 'Re, downcomer', r['Re_downcomer'], ''),
+                                   ('h_spout_W_m2K', 'h, spout', r['h_spout'], 'W/m2/K'),
+                                   ('h_downcomer_W_m2K', 'h, downcomer', r['h_downcomer'],
+                                    'W/m2/K')):
+        row, k = against_one('cg%g' % cg, key, '%s, cg = %g against cg = 1' % (what, cg), value,
+                             unit, ref.get('heat.' + key, ''), settings,
+                             '%.2f h' % (r['wall_s'] / 3600))
+        rows.append(row)
+        keys.append(k)
+    return rows, keys
 
 
 def bed3d_section(case, k):
@@ -233,6 +376,36 @@ def bed3d_section(case, k):
     figs = [('ums.png', 'bed3d_pressure_drop%s.png' % tag)]
     figs += [(f, 'bed3d_%s%s.png' % (f[len('snapshot_'):-4], tag))
              for f in sorted(os.listdir(case)) if f.startswith('snapshot_') and f.endswith('.png')]
+    return rows, keys, figs
+
+
+def bed3d_coarse_section(case, ref):
+    """protocols/minimumSpouting3D run with coarseGraining > 1: the 3-D
+    bed's rows, keyed bed3d.cg<N>.*, beside cg = 1's bed3d.* values (where
+    the parcels are many across the bed, unlike the draft-plate slab)."""
+    from spoutlab import spoutedbed3d
+    g3 = spoutedbed3d.load(case)
+    cg = g3.coarseGraining
+    rows, keys, figs = bed3d_section(case, 0)
+    name = 'bed3d.cg%g' % cg
+    u = read_json(case, 'ums.json', 'protocols/minimumSpouting3D')
+    across = ('coarseGraining %g: parcels of %g mm, %.1f across the inlet, %.1f across the '
+              'column' % (cg, cg * g3.particles['dp'], 1000 * u['D_i_m'] / (cg * g3.particles['dp']),
+                          1000 * u['D_c_m'] / (cg * g3.particles['dp'])))
+    rows = [(q + ', cg = %g' % cg, v, p, s.replace(' particles (', ' parcels (', 1) + '; ' + across,
+             w) for q, v, p, s, w in rows]
+    for key, what, unit in (('u_ms_m_s', 'u_ms', 'm/s'), ('dP_ms_kPa', 'dP_ms', 'kPa')):
+        mine = [k for k in keys if k[0] == 'bed3d.' + key]
+        one = ref.get('bed3d.' + key, '')
+        if mine and one:
+            value = float(mine[0][1])
+            rows.append(('%s, 3-D bed, cg = %g against cg = 1' % (what, cg), '%.4g %s (%+.1f %%)'
+                         % (value, unit, 100 * (value / float(one) - 1)),
+                         'cg = 1: %s %s (bed3d.%s)' % (one, unit, key), rows[0][3], rows[0][4]))
+    keys = [(name + k[0][len('bed3d'):], k[1], k[2], k[3],
+             '%s; cg = 1: bed3d%s %s; %s'
+             % (k[4], k[0][len('bed3d'):], ref.get(k[0], ''), across)) for k in keys]
+    figs = [(f, 'bed3dcg%g_%s' % (cg, to[len('bed3d_'):])) for f, to in figs]
     return rows, keys, figs
 
 
@@ -691,6 +864,7 @@ SECTIONS = [
                'Figs 5-6)'),
     ('bed3d', 'Three-dimensional spouted bed: u_ms and dP_ms against Mathur and Gishler '
               '(issue 27 item 4)'),
+    ('bed3dcoarse', 'Three-dimensional spouted bed coarse-grained against cg = 1 (issue 27)'),
 ]
 CSV_HEADER = ['key', 'value', 'unit', 'paper_value', 'note']
 
@@ -706,6 +880,8 @@ def section_of_key(key):
         return 'coarse'
     if key.startswith('mixing'):
         return 'mixing'
+    if re.match(r'bed3d\.cg[\d.]+\.', key):
+        return 'bed3dcoarse'
     if key.startswith('bed3d'):
         return 'bed3d'
     if key.startswith('draft.Ws_He'):
@@ -719,7 +895,8 @@ FIGURES = {'ums': ('fig2_', 'fig3_'), 'friction': ('fig7_',), 'velocity': ('fig6
            'profiles': ('fig4_5_',), 'heat': ('fig11_', 'fig12_'), 'drying': ('drying_',),
            'drytime': ('drytime_',), 'coarse': ('coarse_',),
            'noplates10k': ('noplates10k_',), 'noplates26k': ('noplates26k_',),
-           'maps': ('noplates_maps_',), 'mixing': ('mixing_',), 'bed3d': ('bed3d_',)}
+           'maps': ('noplates_maps_',), 'mixing': ('mixing_',), 'bed3d': ('bed3d_',),
+           'bed3dcoarse': ('bed3dcg',)}
 
 
 def remove_figures(section, figure_dir):
@@ -730,8 +907,30 @@ def remove_figures(section, figure_dir):
                 os.remove(os.path.join(figure_dir, f))
 
 
+def coarse_runs_section(coarse, runs, figure_dir):
+    """The coarse-graining section from every coarse-grained case copy
+    given: minimumSpouting runs (coarse), and runs['circulation'],
+    ['heat'], ['speedup'] (rows, results.csv rows, figures)."""
+    remove_figures('coarse', figure_dir)
+    csv_path = os.path.join(os.path.dirname(figure_dir), 'results.csv')
+    ref = reference_values(csv_path)
+    rows, keys, pngs = [], [], []
+    for case in coarse:
+        _, r, k, p = coarse_section(case, csv_path)
+        rows, keys, pngs = rows + r, keys + k, pngs + copy(case, p, figure_dir)
+    for case in runs.get('circulation', ()):
+        r, k, p = coarse_circulation(case, ref)
+        rows, keys, pngs = rows + r, keys + k, pngs + copy(case, p, figure_dir)
+    for name, section in (('heat', lambda c: coarse_heat(c, ref)),
+                          ('speedup', coarse_speedup)):
+        for case in runs.get(name, ()):
+            r, k = section(case)
+            rows, keys = rows + r, keys + k
+    return rows, keys, pngs
+
+
 def build(ums, circ, heat, figure_dir, noplates=(), maps=None, mixing=(), drying=None,
-          drytime=None, coarse=(), bed3d=()):
+          drytime=None, coarse=(), bed3d=(), coarse_runs=None):
     """section -> (table rows, results.csv rows, figure names) for the runs given."""
     new = {}
 
@@ -794,15 +993,9 @@ def build(ums, circ, heat, figure_dir, noplates=(), maps=None, mixing=(), drying
             sys.exit('results: %s: %s has no section (expected 10 000 or 26 000 particles)'
                      % (os.path.join(case, 'ums.json'), name))
         new[name] = (rows, keys, figures(name, case, pngs))
-    if coarse:
-        # one section from every coarse-grained case copy given
-        remove_figures('coarse', figure_dir)
-        rows, keys, pngs = [], [], []
-        for case in coarse:
-            _, r, k, p = coarse_section(case, os.path.join(os.path.dirname(figure_dir),
-                                                           'results.csv'))
-            rows, keys, pngs = rows + r, keys + k, pngs + copy(case, p, figure_dir)
-        new['coarse'] = (rows, keys, pngs)
+    runs = coarse_runs or {}
+    if coarse or runs.get('circulation') or runs.get('heat') or runs.get('speedup'):
+        new['coarse'] = coarse_runs_section(coarse, runs, figure_dir)
     if maps:
         rows, keys, pngs = maps_section(maps)
         new['maps'] = (rows, keys, figures('maps', maps, pngs))
@@ -821,6 +1014,14 @@ def build(ums, circ, heat, figure_dir, noplates=(), maps=None, mixing=(), drying
             r, kk, p = bed3d_section(case, k)
             rows, keys, pngs = rows + r, keys + kk, pngs + copy(case, p, figure_dir)
         new['bed3d'] = (rows, keys, pngs)
+    if runs.get('bed3d'):
+        remove_figures('bed3dcoarse', figure_dir)
+        ref = reference_values(os.path.join(os.path.dirname(figure_dir), 'results.csv'))
+        rows, keys, pngs = [], [], []
+        for case in runs['bed3d']:
+            r, k, p = bed3d_coarse_section(case, ref)
+            rows, keys, pngs = rows + r, keys + k, pngs + copy(case, p, figure_dir)
+        new['bed3dcoarse'] = (rows, keys, pngs)
     return new
 
 
@@ -874,6 +1075,16 @@ def parse(argv):
     p.add_argument('--coarse', action='append', default=[], metavar='UMS_DIR',
                    help='a case copy where minimumSpouting ran on the draft-plate bed with '
                         'coarseGraining > 1 (repeat for several factors)')
+    p.add_argument('--bed3dCoarse', action='append', default=[], metavar='UMS3D_DIR',
+                   help='a copy of openfoam_cases/spoutedBed3D where protocols/'
+                        'minimumSpouting3D ran with coarseGraining > 1 (keys bed3d.cg<N>.*)')
+    for name, protocol in (('Circulation', 'circulation friction'),
+                           ('Heat', 'heatTransfer'), ('Speedup', 'coarseSpeedup')):
+        p.add_argument('--coarse' + name, action='append', default=[], metavar='DIR',
+                       help='a case copy where protocols/%s ran with coarseGraining > 1 '
+                            '(coarseSpeedup: at every factor); its rows join the coarse-'
+                            'graining section, which a call rewrites whole: give it every '
+                            '--coarse* run' % protocol)
     p.add_argument('--maps', metavar='MAPS_DIR',
                    help='a case copy where protocols/velocityMaps ran (maps.txt)')
     p.add_argument('--mixing', action='append', default=[], metavar='MIXING_DIR',
@@ -899,13 +1110,16 @@ def main(argv):
     out, cases, heat, noplates, maps, mixing = (a.out, a.cases, a.heat, a.noplates, a.maps,
                                                 a.mixing)
     if not (cases or heat or noplates or maps or mixing or a.drying or a.dryingTime
-            or a.coarse or a.bed3d):
+            or a.coarse or a.bed3d or a.coarseCirculation or a.coarseHeat
+            or a.coarseSpeedup or a.bed3dCoarse):
         p.print_help()
         return 2
     ums = cases[0] if cases else None
     circ = cases[1] if len(cases) > 1 else None
     new = build(ums, circ, heat, os.path.join(os.path.dirname(out), 'figures'), noplates, maps,
-                mixing, a.drying, a.dryingTime, a.coarse, a.bed3d)
+                mixing, a.drying, a.dryingTime, a.coarse, a.bed3d,
+                {'circulation': a.coarseCirculation, 'heat': a.coarseHeat,
+                 'speedup': a.coarseSpeedup, 'bed3d': a.bed3dCoarse})
     old = old_sections(out)
     lines = ['# SpoutLab vs the source papers', '',
              'Written by `openfoam_cases/spoutDraftPlates/protocols/results` from the protocol',
