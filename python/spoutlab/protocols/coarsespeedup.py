@@ -33,6 +33,7 @@ from spoutlab import casefiles as sc
 from spoutlab import cli
 from spoutlab import spoutedbed
 from spoutlab import spoutregime
+from spoutlab.protocols import heattransfer
 
 
 def options(argv):
@@ -74,17 +75,6 @@ def at(rows, t):
     return min(rows, key=lambda r: abs(r[0] - t))
 
 
-def inside(path):
-    """chdir that OpenFOAM's utilities accept (they compare $PWD with cwd)."""
-    os.chdir(path)
-    os.environ['PWD'] = os.getcwd()
-
-
-def setting(entry, value):
-    subprocess.check_call(['foamDictionary', '-entry', entry, '-set', value,
-                           'system/controlDict'], stdout=subprocess.DEVNULL)
-
-
 def run(o, cg):
     """Prepare (once) and run the factor cg in runs/cg<N>/; returns its
     numbers."""
@@ -100,7 +90,7 @@ def run(o, cg):
             '[0-9]*', '*.png', '*.csv', '*.txt', '*.json'), symlinks=True)
         shutil.copytree('0.orig', os.path.join(work, '0.orig'), dirs_exist_ok=True)
     here = os.getcwd()
-    inside(work)
+    heattransfer.inside(work)
     try:
         if not os.path.isfile('log.settleWallTime'):
             t0 = time.time()
@@ -119,7 +109,7 @@ def run(o, cg):
             os.remove('log.spoutFoam')
         if not done:
             subprocess.check_call(['./inletVelocity', '%g' % o['u']])
-            setting('endTime', '%g' % end)
+            heattransfer.setting('endTime', '%g' % end)
             load = os.getloadavg()[0]
             caserun.run_spoutfoam(end, 1, 'coarseSpeedup (cg %g)' % cg)
             open('log.loadAverage', 'w').write('%.2f %.2f\n' % (load, os.getloadavg()[0]))
@@ -134,7 +124,7 @@ def run(o, cg):
         load = [float(x) for x in open('log.loadAverage').read().split()] \
             if os.path.isfile('log.loadAverage') else []
     finally:
-        inside(here)
+        heattransfer.inside(here)
     return {'cg': cg, 'parcels': parcels, 'span_s': [a[0], b[0]],
             'dem_steps': len([r for r in rows if a[0] < r[0] <= b[0]]),
             'cpu_s': round(b[1] - a[1], 2), 'wall_s': b[2] - a[2],
