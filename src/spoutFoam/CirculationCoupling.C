@@ -23,10 +23,6 @@ namespace
 
 const std::string file = "constant/couplingProperties";
 
-// gas_, maxStep_, firstSample_, lastSample_ after the statistics' own
-constexpr int nGas = 7;
-constexpr int extraWidth = nGas + 3;
-
 
 double lengthEntry(const Foam::dictionary& dict, const std::string& where, const Foam::word& key)
 {
@@ -287,7 +283,7 @@ void CirculationCoupling::findCoreFaces()
 }
 
 
-void CirculationCoupling::sampleGas()
+void CirculationCoupling::sampleGas(const ThermalCoupling* thermal)
 {
     // upward mass flows [kg/s]: the face flux along +z (its normal's sign)
     const Foam::vectorField& Sf = mesh_.faceAreas();
@@ -300,14 +296,34 @@ void CirculationCoupling::sampleGas()
     gas_[0] += rho_*in;
     gas_[1] += rho_*up[0];
     gas_[2] += rho_*up[1];
-    // out of each core and into it across its sides, each time's own sign
+    // out of each core and into it across its sides, each time's own sign,
+    // and the T and H2O each flow carries from its upwind cell (on a
+    // processor patch the patch value, the neighbour rank's cell)
+    const Foam::volScalarField* T = thermal ? &thermal->T() : nullptr;
+    const Foam::volScalarField* Y = thermal ? thermal->Y() : nullptr;
+    const Foam::labelList& owner = mesh_.faceOwner();
+    const Foam::labelList& neighbour = mesh_.faceNeighbour();
+    const auto upwind = [&](const Foam::volScalarField& v, const CoreFace& c, bool out)
+    {
+        if (c.patch >= 0)
+        {
+            return out ? v[mesh_.boundaryMesh()[c.patch].faceCells()[c.local]]
+                       : v.boundaryField()[c.patch][c.local];
+        }
+        const bool ownerInside = c.outward > 0;
+        return v[out == ownerInside ? owner[c.face] : neighbour[c.face]];
+    };
     for (std::size_t core = 0; core < coreFaces_.size(); ++core)
     {
         for (const CoreFace& c : coreFaces_[core])
         {
             const double flux = c.patch < 0 ? phi_[c.face] : phi_.boundaryField()[c.patch][c.local];
             const double out = c.outward*flux;
-            gas_[3 + 2*core + (out > 0 ? 0 : 1)] += rho_*std::fabs(out);
+            const std::size_t way = out > 0 ? 0 : 1;
+            const double m = rho_*std::fabs(out);
+            gas_[3 + 2*core + way] += m;
+            if (T) gas_[7 + 4*core + 2*way] += m*upwind(*T, c, out > 0);
+            if (Y) gas_[8 + 4*core + 2*way] += m*upwind(*Y, c, out > 0);
         }
     }
 }
@@ -366,7 +382,7 @@ void CirculationCoupling::sample
         stats_.observe(t, p.x, tracks[k], seen(k, p, map, eps, thermal, T, Y));
     }
     stats_.endSample(t);
-    sampleGas();
+    sampleGas(thermal);
     if (firstSample_ < 0) firstSample_ = t;
     lastSample_ = t;
     seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
@@ -612,6 +628,23 @@ std::string CirculationCoupling::conditionsJson() const
 }
 
 
+std::string CirculationCoupling::carriedJson() const
+{
+    // the flow-weighted T [K] and H2O mass fraction of the gas each of the
+    // four side flows carries; nothing without the heat coupling
+    static const char* const names[4] = {"outOfJet", "intoJet", "outOfFountainCore", "intoFountainCore"};
+    std::string j;
+    for (int k = 0; k < 4; ++k)
+    {
+        const double m = gas_[3 + k], mT = gas_[7 + 2*k], mY = gas_[8 + 2*k];
+        if (!(m > 0 && mT > 0)) continue;
+        j += std::string(j.empty() ? "" : ", ") + "\"" + names[k] + "\": {\"T\": "
+            + number(mT/m) + (mY > 0 ? ", \"H2O\": " + number(mY/m) : "") + "}";
+    }
+    return j.empty() ? j : ",\n    \"carried\": {" + j + "}";
+}
+
+
 void CirculationCoupling::writeJson(const CirculationRun& run) const
 {
     const double n = std::max(stats_.sampleTimes(), 1.0);
@@ -627,7 +660,7 @@ void CirculationCoupling::writeJson(const CirculationRun& run) const
       << number(share(gas_[2])) << ", \"outOfJet\": " << number(share(gas_[3]))
       << ", \"intoJet\": " << number(share(gas_[4])) << ",\n    \"outOfFountainCore\": "
       << number(share(gas_[5])) << ", \"intoFountainCore\": " << number(share(gas_[6]))
-      << "},\n  \"circulationRate\": "
+      << carriedJson() << "},\n  \"circulationRate\": "
       << number(stats_.entries(spoutRegion)/window*run.mass) << "\n}\n";
     const std::string path = mesh_.time().globalPath()/"circulation.json";
     {
