@@ -334,6 +334,8 @@ def consistency(o):
              Tp_start_C=mean_std(T0)[0] - 273.15, Tp_end_direct_C=mean_std(T1)[0] - 273.15,
              Tp_end_predictor_C=pred[-1][2],
              direct_series=direct, predictor_series=pred,
+             exchange_share={k[:-len('_exchange_share')]: float(v) for k, v in summ.items()
+                             if k.endswith('_exchange_share')},
              visits={k: stats['residence'][k]['samples'] for k in circulationstats.DISTRIBUTIONS},
              wall_s=sum(float(x) for x in open(os.path.join(work, 'log.wallTime')))
              if os.path.isfile(os.path.join(work, 'log.wallTime')) else 0.0)

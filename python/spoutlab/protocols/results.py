@@ -811,6 +811,10 @@ def drytime_section(case):
                     % (c['particles'], c['Hd'], c['u_s'], c['T_in'] - 273.15, c['W_in'],
                        c['drying_model'], c['X0'], c['window'], c['window_start'], c['samples'],
                        c.get('gas_model', 'compartments')))
+        if c.get('exchange_share'):
+            settings += ('; the cores exchange the share of the measured flow across their sides '
+                         'that carries heat (%s)' % ', '.join(
+                             '%s %.2f' % kv for kv in sorted(c['exchange_share'].items())))
         wall = '%.2f h' % (c['wall_s'] / 3600)
         rows += [('bed-mean drying rate over the window, predictor / direct CFD-DEM',
                   '%.4g / %.4g kg/kg d.b. per s: %+.1f %%'

@@ -129,6 +129,10 @@ struct Region
     // statistics' gas.intoJet, gas.intoFountainCore, gas.outOfFountainCore;
     // the jet's outflow to the rest is the seepage plus its inflow)
     double intoCore = 0, outOfCore = 0;
+    // the share of that two-way exchange the gas network counts: what
+    // carries heat by the statistics' gas.carried (1 without them), the net
+    // outOfCore - intoCore kept
+    double exchangeShare = 1;
 };
 
 // Gas properties as constant/transportProperties has them.
@@ -220,6 +224,10 @@ struct GasNetwork
     std::vector<GasCompartment> order;
     std::vector<GasInflow> outlet;
 };
+// The share of a core's measured two-way exchange that carries heat, from
+// the temperatures its outflow and inflow carry and those of the core's and
+// the rest's gas (Region::exchangeShare).
+double exchangeShare(double outT, double inT, double coreT, double restT);
 // The case's network: one compartment of the still region, or the four
 // regions' and their cores' (the gas paths above). Throws
 // std::invalid_argument where a core's flows would leave a compartment more

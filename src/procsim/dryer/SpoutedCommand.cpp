@@ -168,6 +168,11 @@ void printSummary(const Case& c, const Result& r, const BatchMetrics& m)
                    g.correlation, g.slipReynolds, g.h, g.hFile, relDiff(g.h, g.hFile), g.km, g.kmFile,
                    r.holdup[i]);
     }
+    for (const auto& g : c.regions)
+        if (g.partOf >= 0 && g.intoCore > 0)
+            fmt::print("{}: exchanges {:.3g} x the inlet air with the rest beside it ({:.3g} crossing, "
+                       "{:.0f} % of it carrying heat by gas.carried)\n",
+                       g.name, g.exchangeShare * g.intoCore, g.intoCore, 100 * g.exchangeShare);
     fmt::print("moisture {:.2f} -> {:.2f} % w.b. (target {:.2f}): {}\n", wetBasis(c.initialX),
                wetBasis(r.finalX), wetBasis(c.targetX),
                r.reachedTarget ? fmt::format("reached after {:.3f} h", r.targetTime / 3600)
@@ -198,6 +203,11 @@ int spoutedCommand(int argc, char** argv)
     writeRegions(base + "_regions.csv", c, r);
     CsvWriter s(base + "_summary.csv", {"quantity", "value"});
     for (const auto& [k, v] : summary(c, r, m)) s.row(std::vector<std::string>{k, v});
+    // each core's exchange with the rest beside it: the share of the
+    // measured two-way flow that carries heat
+    for (const auto& g : c.regions)
+        if (g.partOf >= 0 && g.intoCore > 0)
+            s.row(std::vector<std::string>{g.name + "_exchange_share", formatFixed(g.exchangeShare, 4)});
     s.close();
     printSummary(c, r, m);
     plotPng(base + ".png", texts::plots::spouted,

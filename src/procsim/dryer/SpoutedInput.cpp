@@ -137,6 +137,19 @@ Residence readVisitFractions(const YamlInput& f)
     return res;
 }
 
+// A core's exchangeShare from what spoutFoam measured its side flows carry
+// (gas.carried: the flow-weighted T of the gas going out and coming in);
+// 1 without the measurement.
+double carriedShare(const YamlInput& gas, const std::string& into, const std::string& outOf, double coreT,
+                    double restT)
+{
+    if (!gas.has("carried")) return 1;
+    const YamlInput carried = gas.child("carried");
+    if (!carried.has(into) || !carried.has(outOf)) return 1;
+    return exchangeShare(carried.child(outOf).within("T", 0, 2000, "K"),
+                         carried.child(into).within("T", 0, 2000, "K"), coreT, restT);
+}
+
 // A region's core, where the statistics have it as spoutFoam's do
 // (conditions.entrainment.jet, conditions.fountain.core): a gas compartment
 // of the region (spouted::addCore), with its flows across its sides (gas.into,
@@ -159,7 +172,10 @@ void readCore(const YamlInput& cond, const YamlInput& gas, Case& c, const std::s
     core.gasHumidityFile = j.within("humidityRatio", -1, 0, 1);
     if (j.has("visitFractions")) core.visitFractions = readVisitFractions(j.child("visitFractions"));
     if (gas.has(into)) core.intoCore = gas.within(into, 0, 10);
-    if (!outOf.empty() && gas.has(outOf)) core.outOfCore = gas.within(outOf, 0, 10);
+    if (gas.has(outOf)) core.outOfCore = gas.within(outOf, 0, 10);
+    const double regionT = zone.within("Tgas", 0, 2000, "K");
+    core.exchangeShare = carriedShare(gas, into, outOf, core.gasTemperatureFile,
+                                      (regionT - share * core.gasTemperatureFile) / (1 - share));
     addCore(c, region, name, share, core);
     const Region& rest = c.regions[static_cast<std::size_t>(c.regions.back().partOf)];
     const std::pair<const char*, double> beside[] = {
@@ -228,7 +244,7 @@ void readStatistics(const std::string& file, Case& c, const CaseGeometry& g, con
         throw gas.error("downcomerShare",
                         "1 - spoutShare = " + formatNumber(1 - c.spoutShare) + " within 1e-3");
     if (!c.circulating) return;
-    readCore(cond, gas, c, "entrainment", "jet", "jet", "intoJet", "");
+    readCore(cond, gas, c, "entrainment", "jet", "jet", "intoJet", "outOfJet");
     readCore(cond, gas, c, "fountain", "core", "fountainCore", "intoFountainCore", "outOfFountainCore");
     const Region& core = c.regions.back();
     if (core.name != "fountainCore") return;

@@ -521,6 +521,34 @@ TEST(Spouted, TheFountainCoreTakesTheSpoutsGasItsRestTheSeepage)
     EXPECT_LT(all.energyBalanceRel, 1e-6);
 }
 
+TEST(Spouted, TheCoresExchangeCountsTheShareThatCarriesHeat)
+{
+    // (T_out - T_in) / (T_core - T_rest) by hand, within [0, 1], 1 where
+    // the compartments hardly differ
+    EXPECT_NEAR(exchangeShare(383, 375, 398, 358), 8.0 / 40, 1e-15);
+    EXPECT_EQ(exchangeShare(415, 342, 412, 354), 1.0);
+    EXPECT_EQ(exchangeShare(370, 380, 398, 358), 0.0);
+    EXPECT_EQ(exchangeShare(383, 375, 358.5, 358), 1.0);
+    // in the network a share 1/2 of into 0.2, out 0.3 is into 0.1, out 0.2:
+    // the two-way part halved, the net across the sides kept
+    Case half = withCores(shortBatch(10, 1), 0.4, 0.2, 0.3);
+    half.regions.back().exchangeShare = 0.5;
+    half.regions[regionOf(half, "jet")].exchangeShare = 0.5;
+    Case whole = withCores(shortBatch(10, 1), 0.4, 0.1, 0.2);
+    whole.regions[regionOf(whole, "jet")].intoCore = 0.015;
+    const GasNetwork a = gasNetwork(half), b = gasNetwork(whole);
+    ASSERT_EQ(a.order.size(), b.order.size());
+    for (std::size_t k = 0; k < a.order.size(); ++k)
+    {
+        ASSERT_EQ(a.order[k].in.size(), b.order[k].in.size());
+        for (std::size_t i = 0; i < a.order[k].in.size(); ++i)
+        {
+            EXPECT_EQ(a.order[k].in[i].from, b.order[k].in[i].from);
+            EXPECT_NEAR(a.order[k].in[i].flow, b.order[k].in[i].flow, 1e-15 * half.airFlow);
+        }
+    }
+}
+
 TEST(Spouted, PlugFlowGasLeavesAsTheExponentialRelaxationWellMixedAsItsLimit)
 {
     // one region of 1000 kernels at 25 C that take heat but no water, in a
