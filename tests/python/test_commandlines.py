@@ -4,6 +4,7 @@ stops on a bad option with one line naming it and nothing else on stderr
 (status 2), and reads its options with the defaults its documentation
 gave before the front ends were argparse (the values below are those of
 the usage texts, not read from the code)."""
+import json
 import os
 import shutil
 import signal
@@ -147,6 +148,9 @@ class Defaults(unittest.TestCase):
         o = dryingtime.options([])
         self.assertEqual((o['u'], o['time'], o['average'], o['write'], o['part'], o['bin']),
                          (2.0, 20.0, 18.0, 1.0, 'statistics', 0.05))
+        o = dryingtime.options(['--part', 'study'])
+        self.assertEqual((o['temperatures'], o['velocities'], o['ums'], o['hours'],
+                          o['samples']), ([60, 80, 100, 150], [1.1, 1.3, 1.6], None, 12, 10000))
         _, a = results.parse(['ums', 'circ', '--heat', 'h', '--noplates', 'a',
                               '--noplates', 'b', '-o', 'out.md', '--mixing', 'm', '--drying', 'd',
                               '--dryingTime', 't', '--coarse', 'c2'])
@@ -157,6 +161,30 @@ class Defaults(unittest.TestCase):
                               'h2', '--coarseSpeedup', 's'])
         self.assertEqual((a.coarse, a.coarseCirculation, a.coarseHeat, a.coarseSpeedup),
                          (['c2'], ['w2'], ['h2'], ['s']))
+
+    def test_design_study_without_u_ms_and_its_keys(self):
+        # no --ums and no ums.json: one line, before any run
+        bad = run('protocols/dryingTime', '--part', 'study')
+        self.assertEqual(bad.returncode, 1)
+        self.assertEqual(len(bad.stderr.splitlines()), 1, bad.stderr)
+        self.assertIn('--ums U', bad.stderr)
+        self.assertFalse(os.path.isdir(os.path.join(CASE, 'runs')))
+        # the keys of two points of a bed of 1500 particles, by hand: one
+        # reached the target, one did not (no value, said so)
+        point = dict(u_over_ums=1.3, u_s=1.17, particles=1500, ums=0.9, kWh_per_kg=12.34,
+                     Tmax_C=79.14, spread=0.0123, statistics_wall_s=360, wall_s=20)
+        with tempfile.TemporaryDirectory() as d:
+            with open(os.path.join(d, 'dryingTime.json'), 'w') as f:
+                json.dump({'study': [dict(point, T_in_C=80, reached=1, hours=1.234),
+                                     dict(point, T_in_C=60, reached=0, hours=float('nan'))]}, f)
+            _, keys, _ = results.drytime_section(d)
+        got = {k[0]: k[1:3] for k in keys}
+        self.assertEqual(got['drytime.80C_1.3ums_n1500.hours'], ('1.23', 'h'))
+        self.assertEqual(got['drytime.80C_1.3ums_n1500.kWh_per_kg'], ('12.3', 'kWh/kg'))
+        self.assertEqual(got['drytime.80C_1.3ums_n1500.Tmax_K'], ('352.3', 'K'))
+        self.assertEqual(got['drytime.80C_1.3ums_n1500.spread'], ('0.0123', 'kg/kg'))
+        self.assertEqual(got['drytime.60C_1.3ums_n1500.hours'], ('', 'h'))
+        self.assertIn('not reached', [k for k in keys if k[0] == 'drytime.60C_1.3ums_n1500.hours'][0][4])
 
     def test_coarse_speedup(self):
         o = coarsespeedup.options([])

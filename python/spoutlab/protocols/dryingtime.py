@@ -35,6 +35,25 @@ spouted) takes from the CFD-DEM, and how it compares with it.
                     --average 10.2 --write 0.3 Hd=190
               (the reduced bed of case.spoutedBedCirculation, draft plates
               lowered to 190 mm, 2.0 m/s, inlet air at Tin = 150 C).
+  study       the design study (issue 24 item 5): batches from 25 to 15 %
+              moisture (wet basis) at every inlet air
+              temperature of --temperatures [C] and superficial velocity of
+              --velocities (multiples of --ums, the bed's minimum spouting
+              velocity [m/s], or ums.json's u_ms where protocols/
+              minimumSpouting ran here).  The gas of spoutFoam has constant
+              properties and the heat does not act back on the flow, so the
+              circulation does not depend on the inlet temperature: one
+              statistics run per velocity (the part statistics, cached in
+              runs/statistics_u<u>/; run again, it is reused), then procsim
+              dryer spouted for each temperature from uniform kernels at 25 C
+              (the case's drying model and constants, kernel diffusion by
+              default; plug-flow gas; --samples sample kernels, at most
+              --hours h) in runs/study/<T>C_<k>ums/.
+              Per point: the time to the target, kWh per kg of water, the
+              hottest kernel and the final spread of moisture (study.csv,
+              dryingTime_study.png; keys drytime.<T>C_<k>ums.hours,
+              .kWh_per_kg, .Tmax_K, .spread, with _n<N> after the point
+              for a bed of N particles other than the paper's 26 000).
 Writes dryingTime.txt and dryingTime.json here (read by protocols/results).
 """
 import json
@@ -43,6 +62,7 @@ import os
 import shutil
 import subprocess
 import sys
+import time
 
 from spoutlab import casefiles as sc
 from spoutlab import circulationstats
@@ -57,13 +77,27 @@ GAS_MODEL = 'plugFlow'
 
 def options(argv):
     def extra(p):
-        p.add_argument('--part', choices=('statistics', 'consistency'), default='statistics',
+        p.add_argument('--part', choices=('statistics', 'consistency', 'study'),
+                       default='statistics',
                        help='what to run (default %(default)s)')
         p.add_argument('--bin', type=float, default=0.05, metavar='S',
                        help="residence-time histograms' bin width [s] (default %(default)s)")
         p.add_argument('--copies', type=int, default=10, metavar='K',
                        help='consistency: predictor samples per kernel of the particle file '
                             '(default %(default)s)')
+        p.add_argument('--temperatures', type=float, nargs='+', default=[60, 80, 100, 150],
+                       metavar='C', help='study: inlet air temperatures [C] (default '
+                       '%(default)s)')
+        p.add_argument('--velocities', type=float, nargs='+', default=[1.1, 1.3, 1.6],
+                       metavar='K', help='study: superficial velocities as multiples of --ums '
+                       '(default %(default)s)')
+        p.add_argument('--ums', type=float, metavar='U',
+                       help="study: the bed's minimum spouting velocity [m/s] (default: "
+                       "ums.json's, from protocols/minimumSpouting here)")
+        p.add_argument('--hours', type=float, default=12, metavar='H',
+                       help='study: the longest batch [h] (default %(default)s)')
+        p.add_argument('--samples', type=int, default=10000, metavar='N',
+                       help="study: the predictor's sample kernels (default %(default)s)")
         # the full bed at 2.0 m/s turns over in about 44 s (8.6 kg / W_s 0.196
         # kg/s): 18 s completed no downcomer visit; the cycle check needs a
         # window of several turnovers (--time of a few hundred seconds)
@@ -117,8 +151,8 @@ def statistics(o):
 
 def particle_file_at(work, t, dt):
     """The particle file of the run at time t (within half a time step)."""
-    for time, path in sc.particle_files(work):
-        if abs(time - t) <= 0.5 * dt:
+    for written, path in sc.particle_files(work):
+        if abs(written - t) <= 0.5 * dt:
             return path
     sys.exit('dryingTime: %s/particles: no particle file at t = %g s (the window\'s start and '
              'end must be write times: --time and --time minus --average multiples of --write)'
@@ -369,10 +403,155 @@ def consistency(o):
     return r, lines
 
 
+def minimum_spouting_velocity(o, n):
+    """--ums, or u_ms from ums.json here (protocols/minimumSpouting) for a bed
+    of the study's n particles [m/s]."""
+    if o['ums']:
+        return o['ums']
+    if not os.path.isfile('ums.json'):
+        sys.exit('dryingTime: --part study needs the minimum spouting velocity: --ums U, or '
+                 'protocols/minimumSpouting run here first (ums.json)')
+    u = json.load(open('ums.json'))
+    ms = u.get('u_ms')
+    if not ms or ms.get('bound') or u.get('particles') != n:
+        sys.exit('dryingTime: ums.json: key u_ms expected a minimum spouting velocity of the '
+                 'bed of %d particles (found %s for %s particles): --ums U'
+                 % (n, ms, u.get('particles')))
+    return ms['u_m_s']
+
+
+def batch_case(g, o, path, u, T, statistics_file, n):
+    """path/case.yaml: procsim dryer spouted, a batch from 25 to 15 % (wet
+    basis) at inlet air T [C] and u [m/s], with that velocity's statistics;
+    the kernels, gas and drying model (and its constants) the case's."""
+    d = g.particles['dp'] / 1000
+    X0 = 1 / 3   # 25 % wet basis
+    spout, down = g.correlations
+    model, props = g.dryingModel, {k: v for k, v in g.dryingProps.items() if k != 'kernelSteps'}
+    lines = [
+        '# written by protocols/dryingTime --part study: one point of the design study',
+        'statistics: %s' % os.path.relpath(statistics_file, path),
+        'circulation: measured',
+        'operation:',
+        '  inlet_temperature_C: %.10g' % T,
+        '  inlet_humidity_ratio: %.10g' % g.inletW,
+        '  superficial_velocity_m_per_s: %.10g' % u,
+        '  pressure_Pa: %.10g' % g.gas['pressure'],
+        '  ambient_temperature_C: 20',
+        '  fan_power_kW: 0',
+        'geometry: {Wd: %.10g, He: %.10g, Hd: %.10g, plateThickness: %.10g, width: %.10g, '
+        'depth: %.10g}' % (g.Wd / 1000, g.He / 1000, g.Hd / 1000, g.t / 1000, g.W / 1000,
+                           g.Lb / 1000),
+        'bed:',
+        '  particles: %d' % n,
+        '  kernel_diameter_m: %.10g' % d,
+        '  kernel_dry_mass_kg: %.10g' % (g.particles['rhop'] * math.pi / 6 * d ** 3 / (1 + X0)),
+        '  initial_moisture_db: %.10g' % X0,
+        '  initial_temperature_C: 25',
+        '  kernelHeatCapacity: %.10g' % g.kernelHeatCapacity,
+        'gas: {rho: %.10g, mu: %.10g, Cp: %.10g, kappa: %.10g, Dv: %.10g}'
+        % tuple(g.gas[k] for k in ('rho', 'mu', 'Cp', 'kappa', 'Dv')),
+        'dryingModel: %s' % model,
+    ]
+    if props:
+        lines.append('%sProps: {%s}' % (model, ', '.join('%s: %s' % kv for kv in sorted(props.items()))))
+    lines += [
+        'regions:',
+        '  spout: {heatTransferModel: %s}' % spout,
+        '  fountain: {heatTransferModel: %s}' % spout,
+        '  downcomer: {heatTransferModel: %s}' % down,
+        '  entrainment: {heatTransferModel: %s}' % down,
+        'gasModel: %s' % GAS_MODEL,
+        'target_moisture_wb_percent: 15',
+        'stop_at_target: yes',
+        'kernel_temperature_limit_C: 60',
+        'duration_h: %.10g' % o['hours'],
+        'output_interval_s: 60',
+        'samples: %d' % o['samples'],
+        'seed: 1',
+        'time_step: {max_s: 10, initial_s: 0.1, kernel_temperature_change_K: 1, '
+        'bed_moisture_change: 0.002}',
+    ]
+    os.makedirs(path, exist_ok=True)
+    with open(os.path.join(path, 'case.yaml'), 'w') as f:
+        f.write('\n'.join(lines) + '\n')
+
+
+def study_plot(rows):
+    """dryingTime_study.png: the four figures of merit against the inlet air
+    temperature, a line per velocity."""
+    with open('study.csv', 'w') as f:
+        f.write('T_in_C,u_over_ums,u_s_m_s,hours,kWh_per_kg,T_kernel_max_C,spread_db,'
+                'reached_target,wall_s\n')
+        for r in rows:
+            f.write('%g,%g,%g,%s,%.6g,%.6g,%.6g,%d,%.1f\n'
+                    % (r['T_in_C'], r['u_over_ums'], r['u_s'],
+                       '%.6g' % r['hours'] if r['reached'] else 'nan', r['kWh_per_kg'],
+                       r['Tmax_C'], r['spread'], r['reached'], r['wall_s']))
+    ks = sorted({r['u_over_ums'] for r in rows})
+    panels = [(4, 'drying time to 15 % w.b. [h]'), (5, 'heater energy [kWh per kg water]'),
+              (6, 'hottest kernel [C]'), (7, 'final std of moisture [kg/kg d.b.]')]
+    script = 'set datafile separator ","\nset grid\nset key top right\nset multiplot layout 2,2\n'
+    for col, label in panels:
+        script += ('set xlabel "inlet air temperature [C]"\nset ylabel "%s"\nplot ' % label
+                   + ', '.join('"study.csv" skip 1 using 1:($2 == %g ? $%d : 1/0) with linespoints '
+                               'title "%g u_{ms}"' % (k, col, k) for k in ks) + '\n')
+    sc.plot('dryingTime_study.png', script + 'unset multiplot\n', size=(1100, 850))
+
+
+def study(o):
+    """The design study: a statistics run per velocity (cached), a batch per
+    temperature; its rows and summary lines."""
+    # the case's drying settings (its drying model and constants, the gas's
+    # vapour diffusivity) whatever the statistics runs' moisture setting
+    g = spoutedbed.load('.', o['overrides'] + ['heat=yes', 'moisture=yes'])
+    n = o['n'] or int(g.particles['nParticles'])
+    ums = minimum_spouting_velocity(o, n)
+    procsim = shutil.which('procsim') or sys.exit('dryingTime: procsim not on PATH (. etc/bashrc)')
+    rows, lines = [], ['design study: %d particles, u_ms %g m/s; batches from 25 to 15 %% w.b., '
+                       '%s, %d samples' % (n, ums, g.dryingModel, o['samples'])]
+    for k in o['velocities']:
+        u = round(k * ums, 3)
+        st, _ = statistics(dict(o, u=u))
+        stats_file = os.path.join(st['run'], 'circulation.json')
+        lines.append('%g u_ms = %g m/s: statistics in %s (spoutFoam %.0f min), mean cycle %.3g s, '
+                     '%+.1f %% from bed mass / W_s' % (k, u, st['run'], st['wall_s'] / 60,
+                                                      st['residence']['cycle'],
+                                                      100 * st['cycle_vs_Ws_rel']))
+        for T in o['temperatures']:
+            out = os.path.join('runs', 'study', '%gC_%gums' % (T, k))
+            batch_case(g, o, out, u, T, stats_file, n)
+            t0 = time.time()
+            with open(os.path.join(out, 'log.procsim'), 'w') as log:
+                if subprocess.call([procsim, 'dryer', 'spouted', 'case.yaml', '--out', '.'],
+                                   cwd=out, stdout=log, stderr=subprocess.STDOUT) != 0:
+                    sys.exit('dryingTime: procsim dryer spouted failed, see %s/log.procsim' % out)
+            v = summary_values(os.path.join(out, 'spouted_summary.csv'))
+            r = dict(T_in_C=T, u_over_ums=k, u_s=u, run=out, reached=int(v['reached_target']),
+                     hours=float(v['time_to_target_h']), kWh_per_kg=float(v['kWh_per_kg']),
+                     Tmax_C=float(v['T_kernel_max_C']),
+                     spread=float(v['X_final_std_percent_db']) / 100,
+                     eta_percent=float(v['eta_percent']), wall_s=time.time() - t0,
+                     statistics_wall_s=st['wall_s'], particles=n, ums=ums, Hd=g.Hd / 1000,
+                     drying_model=g.dryingModel)
+            rows.append(r)
+            lines.append('  %5g C: %s, %.3g kWh/kg water, hottest kernel %.1f C, final std %.4f '
+                         'kg/kg d.b. (procsim %.0f s)'
+                         % (T, '%.2f h to 15 %%' % r['hours'] if r['reached']
+                            else 'not at 15 %% after %g h' % o['hours'], r['kWh_per_kg'],
+                            r['Tmax_C'], r['spread'], r['wall_s']))
+    study_plot(rows)
+    return rows, lines
+
+
 def main(argv):
     o = options(argv)
     numbers = json.load(open('dryingTime.json')) if os.path.isfile('dryingTime.json') else {}
-    if o['part'] == 'consistency':
+    if o['part'] == 'study':
+        rows, lines = study(o)
+        numbers['study'] = rows
+        text = ['the design study of the bed with draft plates (issue 24 item 5)']
+    elif o['part'] == 'consistency':
         r, lines = consistency(o)
         numbers['consistency'] = r
         text = ['the long-time predictor against a direct CFD-DEM drying run (issue 24 item 3); '

@@ -773,6 +773,41 @@ def drying_section(case):
     return rows, keys, pngs
 
 
+def drytime_study(study):
+    """The design study's rows and keys (dryingTime --part study): per point
+    the time to 15 % w.b., kWh per kg water, the hottest kernel, the final
+    spread; keys with _n<N> for a bed other than the paper's 26 000."""
+    rows, keys = [], []
+    n, ums = study[0]['particles'], study[0]['ums']
+    suffix = '' if n == 26000 else '_n%d' % n
+    settings = ('%d particles, draft plates at Hd = %g m, u_ms %g m/s; batches from 25 to 15 %% '
+                'w.b. at 25 C, %s, gasModel plugFlow; one statistics run per velocity (the '
+                'circulation does not depend on the inlet temperature)'
+                % (n, study[0].get('Hd', float('nan')), ums,
+                   study[0].get('drying_model', 'kernelDiffusion')))
+    for q in study:
+        point = 'drytime.%gC_%gums%s' % (q['T_in_C'], q['u_over_ums'], suffix)
+        where = '%g C, %g u_ms (%g m/s); ' % (q['T_in_C'], q['u_over_ums'], q['u_s'])
+        rows.append(('design study at %g C, %g u_ms: time to 15 %%, kWh per kg water, hottest '
+                     'kernel, final std of moisture' % (q['T_in_C'], q['u_over_ums']),
+                     '%s, %.3g kWh/kg, %.1f C, %.4f kg/kg d.b.'
+                     % ('%.2f h' % q['hours'] if q['reached'] else 'not reached',
+                        q['kWh_per_kg'], q['Tmax_C'], q['spread']),
+                     '', settings, '%.2f h statistics, %.0f s predictor'
+                     % (q['statistics_wall_s'] / 3600, q['wall_s'])))
+        keys += [(point + '.hours', '%.3g' % q['hours'] if q['reached'] else '', 'h', '',
+                  where + ('time to 15 % w.b.; ' if q['reached']
+                           else 'no value: 15 % w.b. not reached in the batch; ') + settings),
+                 (point + '.kWh_per_kg', '%.3g' % q['kWh_per_kg'], 'kWh/kg', '',
+                  where + "heater energy per kg of water evaporated (the tray-dryer paper's "
+                  'definition); ' + settings),
+                 (point + '.Tmax_K', '%.4g' % (q['Tmax_C'] + 273.15), 'K', '',
+                  where + 'the hottest kernel of the batch; ' + settings),
+                 (point + '.spread', '%.3g' % q['spread'], 'kg/kg', '',
+                  where + "std of the kernels' moisture at the end (d.b.); " + settings)]
+    return rows, keys
+
+
 def drytime_section(case):
     """The long-time predictor's side of the CFD-DEM from protocols/
     dryingTime's dryingTime.json: the circulation statistics per operating
@@ -848,6 +883,11 @@ def drytime_section(case):
                  ('drytime.consistency_spread_rel', '%.3g' % c['spread_rel'], '', '0',
                   "predictor / direct - 1 of the std of the kernels' moisture at the end; direct "
                   '%.4g kg/kg; ' % c['spread_direct'] + settings)]
+    if r.get('study'):
+        study_rows, study_keys = drytime_study(r['study'])
+        rows += study_rows
+        keys += study_keys
+        pngs.append(('dryingTime_study.png', 'drytime_study.png'))
     return rows, keys, [p for p in pngs if os.path.isfile(os.path.join(case, p[0]))]
 
 
