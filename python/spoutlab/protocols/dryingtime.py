@@ -175,22 +175,22 @@ def mean_std(v):
     return m, math.sqrt(sum((x - m) ** 2 for x in v) / len(v))
 
 
-def predictor_case(g, o, work, n, window, bin_width):
-    """predictor/case.yaml: procsim dryer spouted over the window, from the
-    kernels at its start, with the run's statistics, air, bed and gas."""
+def predictor_lines(g, statistics, u, T_C, n, X_d, initial):
+    """The lines of a procsim dryer spouted case the two parts share: the
+    statistics, the inlet air (T_C [C], the case's humidity) at u [m/s], the
+    geometry, the bed of n kernels (dry mass at the moisture X_d, the initial
+    lines given), the gas, the drying model and the regions' correlations,
+    the gas model."""
     d = g.particles['dp'] / 1000
-    dry_mass = g.particles['rhop'] * math.pi / 6 * d ** 3 / (1 + g.X0)
     spout, down = g.correlations
     props = {k: v for k, v in g.dryingProps.items() if k != 'kernelSteps'}  # the CFD's stepping
     lines = [
-        '# written by protocols/dryingTime --part consistency: the predictor over the',
-        '# window of the direct CFD-DEM run in .., from its kernels at the start',
-        'statistics: ../circulation.json',
+        'statistics: %s' % statistics,
         'circulation: measured',
         'operation:',
-        '  inlet_temperature_C: %.10g' % (g.Tin - 273.15),
+        '  inlet_temperature_C: %.10g' % T_C,
         '  inlet_humidity_ratio: %.10g' % g.inletW,
-        '  superficial_velocity_m_per_s: %.10g' % o['u'],
+        '  superficial_velocity_m_per_s: %.10g' % u,
         '  pressure_Pa: %.10g' % g.gas['pressure'],
         '  ambient_temperature_C: 20',
         '  fan_power_kW: 0',
@@ -200,8 +200,8 @@ def predictor_case(g, o, work, n, window, bin_width):
         'bed:',
         '  particles: %d' % n,
         '  kernel_diameter_m: %.10g' % d,
-        '  kernel_dry_mass_kg: %.10g' % dry_mass,
-        '  initial_state: initial_state.csv',
+        '  kernel_dry_mass_kg: %.10g' % (g.particles['rhop'] * math.pi / 6 * d ** 3 / (1 + X_d)),
+    ] + ['  ' + line for line in initial] + [
         '  kernelHeatCapacity: %.10g' % g.kernelHeatCapacity,
         'gas: {rho: %.10g, mu: %.10g, Cp: %.10g, kappa: %.10g, Dv: %.10g}'
         % tuple(g.gas[k] for k in ('rho', 'mu', 'Cp', 'kappa', 'Dv')),
@@ -210,7 +210,7 @@ def predictor_case(g, o, work, n, window, bin_width):
     if props:
         lines.append('%sProps: {%s}' % (g.dryingModel,
                                         ', '.join('%s: %s' % kv for kv in sorted(props.items()))))
-    lines += [
+    return lines + [
         'regions:',
         '  spout: {heatTransferModel: %s}' % spout,
         '  fountain: {heatTransferModel: %s}' % spout,
@@ -222,6 +222,23 @@ def predictor_case(g, o, work, n, window, bin_width):
         # well-mixed compartments have it: the two coincide where the gas
         # takes up the kernels' temperature, the downcomer)
         'gasModel: %s' % GAS_MODEL,
+    ]
+
+
+def write_case(path, lines):
+    os.makedirs(path, exist_ok=True)
+    with open(os.path.join(path, 'case.yaml'), 'w') as f:
+        f.write('\n'.join(lines) + '\n')
+
+
+def predictor_case(g, o, work, n, window, bin_width):
+    """predictor/case.yaml: procsim dryer spouted over the window, from the
+    kernels at its start, with the run's statistics, air, bed and gas."""
+    write_case(os.path.join(work, 'predictor'), [
+        '# written by protocols/dryingTime --part consistency: the predictor over the',
+        '# window of the direct CFD-DEM run in .., from its kernels at the start',
+    ] + predictor_lines(g, '../circulation.json', o['u'], g.Tin - 273.15, n, g.X0,
+                        ['initial_state: initial_state.csv']) + [
         'target_moisture_wb_percent: 0.5',
         'stop_at_target: no',
         'kernel_temperature_limit_C: 60',
@@ -232,10 +249,7 @@ def predictor_case(g, o, work, n, window, bin_width):
         # steps no longer than a histogram bin: the compartments' gas follows
         # the samples that cross between regions
         'time_step: {max_s: %.10g, initial_s: %.10g}' % (bin_width, bin_width),
-    ]
-    os.makedirs(os.path.join(work, 'predictor'), exist_ok=True)
-    with open(os.path.join(work, 'predictor', 'case.yaml'), 'w') as f:
-        f.write('\n'.join(lines) + '\n')
+    ])
 
 
 def series(path):
@@ -424,57 +438,19 @@ def batch_case(g, o, path, u, T, statistics_file, n):
     """path/case.yaml: procsim dryer spouted, a batch from 25 to 15 % (wet
     basis) at inlet air T [C] and u [m/s], with that velocity's statistics;
     the kernels, gas and drying model (and its constants) the case's."""
-    d = g.particles['dp'] / 1000
     X0 = 1 / 3   # 25 % wet basis
-    spout, down = g.correlations
-    model, props = g.dryingModel, {k: v for k, v in g.dryingProps.items() if k != 'kernelSteps'}
-    lines = [
-        '# written by protocols/dryingTime --part study: one point of the design study',
-        'statistics: %s' % os.path.relpath(statistics_file, path),
-        'circulation: measured',
-        'operation:',
-        '  inlet_temperature_C: %.10g' % T,
-        '  inlet_humidity_ratio: %.10g' % g.inletW,
-        '  superficial_velocity_m_per_s: %.10g' % u,
-        '  pressure_Pa: %.10g' % g.gas['pressure'],
-        '  ambient_temperature_C: 20',
-        '  fan_power_kW: 0',
-        'geometry: {Wd: %.10g, He: %.10g, Hd: %.10g, plateThickness: %.10g, width: %.10g, '
-        'depth: %.10g}' % (g.Wd / 1000, g.He / 1000, g.Hd / 1000, g.t / 1000, g.W / 1000,
-                           g.Lb / 1000),
-        'bed:',
-        '  particles: %d' % n,
-        '  kernel_diameter_m: %.10g' % d,
-        '  kernel_dry_mass_kg: %.10g' % (g.particles['rhop'] * math.pi / 6 * d ** 3 / (1 + X0)),
-        '  initial_moisture_db: %.10g' % X0,
-        '  initial_temperature_C: 25',
-        '  kernelHeatCapacity: %.10g' % g.kernelHeatCapacity,
-        'gas: {rho: %.10g, mu: %.10g, Cp: %.10g, kappa: %.10g, Dv: %.10g}'
-        % tuple(g.gas[k] for k in ('rho', 'mu', 'Cp', 'kappa', 'Dv')),
-        'dryingModel: %s' % model,
-    ]
-    if props:
-        lines.append('%sProps: {%s}' % (model, ', '.join('%s: %s' % kv for kv in sorted(props.items()))))
-    lines += [
-        'regions:',
-        '  spout: {heatTransferModel: %s}' % spout,
-        '  fountain: {heatTransferModel: %s}' % spout,
-        '  downcomer: {heatTransferModel: %s}' % down,
-        '  entrainment: {heatTransferModel: %s}' % down,
-        'gasModel: %s' % GAS_MODEL,
-        'target_moisture_wb_percent: 15',
-        'stop_at_target: yes',
-        'kernel_temperature_limit_C: 60',
-        'duration_h: %.10g' % o['hours'],
-        'output_interval_s: 60',
-        'samples: %d' % o['samples'],
-        'seed: 1',
-        'time_step: {max_s: 10, initial_s: 0.1, kernel_temperature_change_K: 1, '
-        'bed_moisture_change: 0.002}',
-    ]
-    os.makedirs(path, exist_ok=True)
-    with open(os.path.join(path, 'case.yaml'), 'w') as f:
-        f.write('\n'.join(lines) + '\n')
+    write_case(path, ['# written by protocols/dryingTime --part study: one point of the design study']
+               + predictor_lines(g, os.path.relpath(statistics_file, path), u, T, n, X0,
+                                 ['initial_moisture_db: %.10g' % X0, 'initial_temperature_C: 25'])
+               + ['target_moisture_wb_percent: 15',
+                  'stop_at_target: yes',
+                  'kernel_temperature_limit_C: 60',
+                  'duration_h: %.10g' % o['hours'],
+                  'output_interval_s: 60',
+                  'samples: %d' % o['samples'],
+                  'seed: 1',
+                  'time_step: {max_s: 10, initial_s: 0.1, kernel_temperature_change_K: 1, '
+                  'bed_moisture_change: 0.002}'])
 
 
 def study_plot(rows):
