@@ -287,9 +287,26 @@ void CirculationCoupling::sampleGas(const ThermalCoupling* thermal)
 {
     // upward mass flows [kg/s]: the face flux along +z (its normal's sign)
     const Foam::vectorField& Sf = mesh_.faceAreas();
+    // and, with the heat coupling, the T and H2O they carry from their
+    // upwind cells (the mixed-cup gas through the spout gap and the
+    // downcomers, beside what the kernels there see)
+    const Foam::volScalarField* T = thermal ? &thermal->T() : nullptr;
+    const Foam::volScalarField* Y = thermal ? thermal->Y() : nullptr;
+    const Foam::labelList& owner = mesh_.faceOwner();
+    const Foam::labelList& neighbour = mesh_.faceNeighbour();
     double up[2] = {0, 0};
-    for (const Foam::label f : spoutFaces_) up[0] += phi_[f]*Foam::sign(Sf[f].z());
-    for (const Foam::label f : downcomerFaces_) up[1] += phi_[f]*Foam::sign(Sf[f].z());
+    const std::vector<Foam::label>* planes[2] = {&spoutFaces_, &downcomerFaces_};
+    for (int k = 0; k < 2; ++k)
+    {
+        for (const Foam::label f : *planes[k])
+        {
+            const double flux = phi_[f]*Foam::sign(Sf[f].z());
+            up[k] += flux;
+            const Foam::label from = phi_[f] > 0 ? owner[f] : neighbour[f];
+            if (T) gas_[15 + 2*k] += rho_*flux*(*T)[from];
+            if (Y) gas_[16 + 2*k] += rho_*flux*(*Y)[from];
+        }
+    }
     const Foam::label inlet = mesh_.boundaryMesh().findPatchID("inlet");
     double in = 0;
     if (inlet >= 0) in = -Foam::sum(phi_.boundaryField()[inlet]);
@@ -299,10 +316,6 @@ void CirculationCoupling::sampleGas(const ThermalCoupling* thermal)
     // out of each core and into it across its sides, each time's own sign,
     // and the T and H2O each flow carries from its upwind cell (on a
     // processor patch the patch value, the neighbour rank's cell)
-    const Foam::volScalarField* T = thermal ? &thermal->T() : nullptr;
-    const Foam::volScalarField* Y = thermal ? thermal->Y() : nullptr;
-    const Foam::labelList& owner = mesh_.faceOwner();
-    const Foam::labelList& neighbour = mesh_.faceNeighbour();
     const auto upwind = [&](const Foam::volScalarField& v, const CoreFace& c, bool out)
     {
         if (c.patch >= 0)
@@ -631,12 +644,15 @@ std::string CirculationCoupling::conditionsJson() const
 std::string CirculationCoupling::carriedJson() const
 {
     // the flow-weighted T [K] and H2O mass fraction of the gas each of the
-    // four side flows carries; nothing without the heat coupling
-    static const char* const names[4] = {"outOfJet", "intoJet", "outOfFountainCore", "intoFountainCore"};
+    // four side flows carries, and of the net upward flows through the
+    // spout gap and the downcomers; nothing without the heat coupling
+    static const char* const names[6] =
+        {"outOfJet", "intoJet", "outOfFountainCore", "intoFountainCore", "spoutGap", "downcomers"};
     std::string j;
-    for (int k = 0; k < 4; ++k)
+    for (int k = 0; k < 6; ++k)
     {
-        const double m = gas_[3 + k], mT = gas_[7 + 2*k], mY = gas_[8 + 2*k];
+        const double m = k < 4 ? gas_[3 + k] : gas_[k - 3];
+        const double mT = gas_[7 + 2*k], mY = gas_[8 + 2*k];
         if (!(m > 0 && mT > 0)) continue;
         j += std::string(j.empty() ? "" : ", ") + "\"" + names[k] + "\": {\"T\": "
             + number(mT/m) + (mY > 0 ? ", \"H2O\": " + number(mY/m) : "") + "}";

@@ -8,7 +8,9 @@ The cores' sides are the mesh faces at |x| = Wd/2 whose normal is along x,
 below He (the jet) and above Hd (the fountain's core), Wd, He, Hd from
 constant/spoutedBed [mm]; each face's flux phi leaves the core where the
 normal points away from the axis; the gas it carries is its upwind cell's: T
-and H2O (where the run dries) of the cell it comes from.  Read from the ASCII polyMesh and fields
+and H2O (where the run dries) of the cell it comes from.  The same of the
+net upward flows through the spout gap and the downcomers, on the plane of
+horizontal faces nearest to mid-plate height (He + Hd)/2 from below.  Read from the ASCII polyMesh and fields
 with nothing of spoutFoam's own, so a wrong upwind cell, a wrong sign or a
 face counted twice shows as a difference beyond the ten digits the file
 keeps.
@@ -54,12 +56,27 @@ geometry = os.path.join(case, 'constant', 'spoutedBed')
 half, He, Hd = (0.5e-3 * foamfile.scalar(geometry, 'Wd'), 1e-3 * foamfile.scalar(geometry, 'He'),
                 1e-3 * foamfile.scalar(geometry, 'Hd'))
 
+plate = 1e-3 * foamfile.scalar(geometry, 'plateThickness')
 # sums[core][way] = [flow, flow T, flow H2O]; way 0 out of the core, 1 into it
 sums = np.zeros((2, 2, 3))
+# planes[k] = the same of the net upward flow through the spout gap (k 0)
+# and the downcomers (1), on the plane of horizontal faces nearest to
+# mid-plate height from below
+planes = np.zeros((2, 3))
+geometry_of = []
 for f in range(len(neighbour)):
     p = points[faces[f]]
-    centre = p.mean(axis=0)
-    area = 0.5 * np.cross(p[2] - p[0], p[3] - p[1])   # a quad's area vector
+    geometry_of.append((p.mean(axis=0), 0.5 * np.cross(p[2] - p[0], p[3] - p[1])))  # a quad's area
+mid = 0.5 * (He + Hd)
+plane = max(c[2] for c, a in geometry_of
+            if abs(a[2]) >= 0.99 * np.linalg.norm(a) and c[2] <= mid + 1e-9)
+for f, (centre, area) in enumerate(geometry_of):
+    if abs(area[2]) >= 0.99 * np.linalg.norm(area) and abs(centre[2] - plane) <= 1e-9:
+        k = 0 if abs(centre[0]) < half else 1 if abs(centre[0]) > half + plate else -1
+        if k >= 0:
+            upwind = owner[f] if phi[f] > 0 else neighbour[f]
+            planes[k] += phi[f] * np.sign(area[2]) * np.array([1, T[upwind], Y[upwind]])
+for f, (centre, area) in enumerate(geometry_of):
     if abs(area[0]) < 0.99 * np.linalg.norm(area) or abs(abs(centre[0]) - half) > 1e-6 * half:
         continue
     core = 0 if centre[2] < He else 1 if centre[2] > Hd else -1
@@ -93,4 +110,18 @@ for core in range(2):
     failures += not ok
     print('%-18s %-4s fields %.10g, circulation.json %.10g: %s'
           % (names[core][0], '/in', here, there, 'PASS' if ok else 'FAIL'))
+for k, name in enumerate(('spoutGap', 'downcomers')):
+    flow, flowT, flowY = planes[k]
+    for key, here in (('T', flowT / flow), ('H2O', flowY / flow))[:2 if os.path.exists(vapour) else 1]:
+        there = gas['carried'][name][key]
+        rel = abs(there / here - 1)
+        ok = rel <= TOL
+        failures += not ok
+        print('%-18s %-4s fields %.10g, circulation.json %.10g (rel %.1e): %s'
+              % (name, key, here, there, rel, 'PASS' if ok else 'FAIL'))
+here, there = planes[0, 0] / planes[1, 0], gas['spoutShare'] / gas['downcomerShare']
+ok = abs(there / here - 1) <= TOL
+failures += not ok
+print('%-18s %-4s fields %.10g, circulation.json %.10g: %s'
+      % ('spout/downcomers', '', here, there, 'PASS' if ok else 'FAIL'))
 sys.exit('check_carried: %d values differ' % failures if failures else 0)

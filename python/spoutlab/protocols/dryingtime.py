@@ -45,10 +45,13 @@ spouted) takes from the CFD-DEM, and how it compares with it.
               circulation does not depend on the inlet temperature: one
               statistics run per velocity (the part statistics, cached in
               runs/statistics_u<u>/; run again, it is reused), then procsim
-              dryer spouted for each temperature from uniform kernels at 25 C
+              dryer spouted (a batch already run with the same case is
+              reused) for each temperature from uniform kernels at 25 C
               (the case's drying model and constants, kernel diffusion by
-              default; plug-flow gas; --samples sample kernels, at most
-              --hours h) in runs/study/<T>C_<k>ums/.
+              default; each region's h and k_m from its correlation at its
+              measured slip Re and voidage, since the statistics runs' dry
+              kernels measure no k_m; plug-flow gas; --samples sample
+              kernels, at most --hours h) in runs/study/<T>C_<k>ums/.
               Per point: the time to the target, kWh per kg of water, the
               hottest kernel and the final spread of moisture (study.csv,
               dryingTime_study.png; keys drytime.<T>C_<k>ums.hours,
@@ -226,9 +229,15 @@ def predictor_lines(g, statistics, u, T_C, n, X_d, initial):
 
 
 def write_case(path, lines):
+    """path/case.yaml; False if it already held exactly these lines."""
     os.makedirs(path, exist_ok=True)
-    with open(os.path.join(path, 'case.yaml'), 'w') as f:
-        f.write('\n'.join(lines) + '\n')
+    text = '\n'.join(lines) + '\n'
+    case = os.path.join(path, 'case.yaml')
+    if os.path.isfile(case) and open(case).read() == text:
+        return False
+    with open(case, 'w') as f:
+        f.write(text)
+    return True
 
 
 def predictor_case(g, o, work, n, window, bin_width):
@@ -406,6 +415,16 @@ def consistency(o):
                  '%.5g kg/kg per s, %.2f x the direct run: the rate is set by the gas the '
                  'kernels see' % (r['rate_unlimited_air'], r['rate_unlimited_air'] / rate_direct))
     r['regions'] = region_comparison(out, stats, lines)
+    carried = stats['gas'].get('carried', {})
+    if 'spoutGap' in carried:
+        # the gas through the spout gap and the downcomers at mid-plate height
+        # as it flows (mixed cup) against what the kernels there saw
+        r['mixed_cup_C'] = {k: carried[name]['T'] - 273.15
+                            for k, name in (('spout', 'spoutGap'), ('downcomer', 'downcomers'))}
+        lines.append('  the gas through the spout gap and the downcomers at mid-plate height, '
+                     'flow-weighted: %.1f and %.1f C (their kernels saw %.1f and %.1f C)'
+                     % (r['mixed_cup_C']['spout'], r['mixed_cup_C']['downcomer'],
+                        r['regions']['spout']['Tgas_C'][1], r['regions']['downcomer']['Tgas_C'][1]))
     if g.dryingModel == 'freeWater':
         d = g.particles['dp'] / 1000
         r['rate_region_means'] = region_mean_rate(
@@ -437,12 +456,16 @@ def minimum_spouting_velocity(o, n):
 def batch_case(g, o, path, u, T, statistics_file, n):
     """path/case.yaml: procsim dryer spouted, a batch from 25 to 15 % (wet
     basis) at inlet air T [C] and u [m/s], with that velocity's statistics;
-    the kernels, gas and drying model (and its constants) the case's."""
+    the kernels, gas and drying model (and its constants) the case's.  False
+    if the file was already this case."""
     X0 = 1 / 3   # 25 % wet basis
-    write_case(path, ['# written by protocols/dryingTime --part study: one point of the design study']
+    return write_case(path, ['# written by protocols/dryingTime --part study: one point of the design study']
                + predictor_lines(g, os.path.relpath(statistics_file, path), u, T, n, X0,
                                  ['initial_moisture_db: %.10g' % X0, 'initial_temperature_C: 25'])
-               + ['target_moisture_wb_percent: 15',
+               # the statistics runs' dry kernels measured no k_m: each region's
+               # h and k_m from its correlation at its measured slip Re and voidage
+               + ['transfer_coefficients: correlation',
+                  'target_moisture_wb_percent: 15',
                   'stop_at_target: yes',
                   'kernel_temperature_limit_C: 60',
                   'duration_h: %.10g' % o['hours'],
@@ -490,25 +513,32 @@ def study(o):
         u = round(k * ums, 3)
         st, _ = statistics(dict(o, u=u))
         stats_file = os.path.join(st['run'], 'circulation.json')
-        lines.append('%g u_ms = %g m/s: statistics in %s (spoutFoam %.0f min), mean cycle %.3g s, '
-                     '%+.1f %% from bed mass / W_s' % (k, u, st['run'], st['wall_s'] / 60,
-                                                      st['residence']['cycle'],
-                                                      100 * st['cycle_vs_Ws_rel']))
+        rel = st['cycle_vs_Ws_rel']
+        lines.append('%g u_ms = %g m/s: statistics in %s (spoutFoam %.0f min), mean cycle %.3g s, %s'
+                     % (k, u, st['run'], st['wall_s'] / 60, st['residence']['cycle'],
+                        '%+.1f %% from bed mass / W_s' % (100 * rel) if math.isfinite(rel) else
+                        'W_s of eq 14 not above 0 (its downcomer row, just above the slanting base, '
+                        'lies above a shallow bed)'))
         for T in o['temperatures']:
             out = os.path.join('runs', 'study', '%gC_%gums' % (T, k))
-            batch_case(g, o, out, u, T, stats_file, n)
-            t0 = time.time()
-            with open(os.path.join(out, 'log.procsim'), 'w') as log:
-                if subprocess.call([procsim, 'dryer', 'spouted', 'case.yaml', '--out', '.'],
-                                   cwd=out, stdout=log, stderr=subprocess.STDOUT) != 0:
-                    sys.exit('dryingTime: procsim dryer spouted failed, see %s/log.procsim' % out)
-            v = summary_values(os.path.join(out, 'spouted_summary.csv'))
+            summary, wall = (os.path.join(out, f) for f in ('spouted_summary.csv', 'log.wallTime'))
+            # a batch run before with the same case is taken as it is
+            if batch_case(g, o, out, u, T, stats_file, n) or not os.path.isfile(wall):
+                t0 = time.time()
+                with open(os.path.join(out, 'log.procsim'), 'w') as log:
+                    if subprocess.call([procsim, 'dryer', 'spouted', 'case.yaml', '--out', '.'],
+                                       cwd=out, stdout=log, stderr=subprocess.STDOUT) != 0:
+                        sys.exit('dryingTime: procsim dryer spouted failed, see %s/log.procsim'
+                                 % out)
+                open(wall, 'w').write('%.1f\n' % (time.time() - t0))
+            v = summary_values(summary)
             r = dict(T_in_C=T, u_over_ums=k, u_s=u, run=out, reached=int(v['reached_target']),
                      hours=float(v['time_to_target_h']), kWh_per_kg=float(v['kWh_per_kg']),
                      Tmax_C=float(v['T_kernel_max_C']),
                      spread=float(v['X_final_std_percent_db']) / 100,
-                     eta_percent=float(v['eta_percent']), wall_s=time.time() - t0,
-                     statistics_wall_s=st['wall_s'], particles=n, ums=ums, Hd=g.Hd / 1000,
+                     eta_percent=float(v['eta_percent']), wall_s=float(open(wall).read()),
+                     statistics_wall_s=st['wall_s'], cycle_s=st['residence']['cycle'],
+                     particles=n, ums=ums, Hd=g.Hd / 1000,
                      drying_model=g.dryingModel)
             rows.append(r)
             lines.append('  %5g C: %s, %.3g kWh/kg water, hottest kernel %.1f C, final std %.4f '

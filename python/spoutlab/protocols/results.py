@@ -780,17 +780,23 @@ def drytime_study(study):
     rows, keys = [], []
     n, ums = study[0]['particles'], study[0]['ums']
     suffix = '' if n == 26000 else '_n%d' % n
-    settings = ('%d particles, draft plates at Hd = %g m, u_ms %g m/s; batches from 25 to 15 %% '
+    settings = ('%d particles, draft plates at Hd = %g m, u_ms %g m/s (this bed\'s); batches from 25 to 15 %% '
                 'w.b. at 25 C, %s, gasModel plugFlow; one statistics run per velocity (the '
                 'circulation does not depend on the inlet temperature)'
                 % (n, study[0].get('Hd', float('nan')), ums,
                    study[0].get('drying_model', 'kernelDiffusion')))
+    for k in sorted({q['u_over_ums'] for q in study}):
+        q = [q for q in study if q['u_over_ums'] == k][0]
+        if 'cycle_s' in q:
+            rows.append(('design study: the circulation statistics at %g u_ms (%g m/s)'
+                         % (k, q['u_s']), 'mean cycle %.3g s' % q['cycle_s'], '', settings,
+                         '%.2f h' % (q['statistics_wall_s'] / 3600)))
     for q in study:
         point = 'drytime.%gC_%gums%s' % (q['T_in_C'], q['u_over_ums'], suffix)
         where = '%g C, %g u_ms (%g m/s); ' % (q['T_in_C'], q['u_over_ums'], q['u_s'])
         rows.append(('design study at %g C, %g u_ms: time to 15 %%, kWh per kg water, hottest '
                      'kernel, final std of moisture' % (q['T_in_C'], q['u_over_ums']),
-                     '%s, %.3g kWh/kg, %.1f C, %.4f kg/kg d.b.'
+                     '%s, %.3g kWh/kg, %.1f C, %.2g kg/kg d.b.'
                      % ('%.2f h' % q['hours'] if q['reached'] else 'not reached',
                         q['kWh_per_kg'], q['Tmax_C'], q['spread']),
                      '', settings, '%.2f h statistics, %.0f s predictor'
@@ -869,6 +875,13 @@ def drytime_section(case):
                                              'entrainment', 'jet') if k in c['regions'])
                          + '; unlimited air %.2f x the direct rate'
                          % (c['rate_unlimited_air'] / c['rate_direct']), '', settings, wall))
+        if 'mixed_cup_C' in c:
+            rows.append(('gas through the spout gap and the downcomers at mid-plate height, '
+                         'flow-weighted (mixed cup), against what their kernels saw (CFD-DEM)',
+                         'spout %.1f / %.1f C, downcomers %.1f / %.1f C'
+                         % (c['mixed_cup_C']['spout'], c['regions']['spout']['Tgas_C'][1],
+                            c['mixed_cup_C']['downcomer'],
+                            c['regions']['downcomer']['Tgas_C'][1]), '', settings, wall))
         if 'rate_region_means' in c:
             rows.append(("free-water rate from the CFD-DEM's region means (holdup, k_m, gas and "
                          'kernel state), against the direct rate',
