@@ -289,5 +289,47 @@ class FrontEnd(unittest.TestCase):
             mixing.main([self.case, '--cell', '0', '57'])
 
 
+class CirculationNeeded(unittest.TestCase):
+    """The W_s the papers' 2 s would need, from a made-up M(t): M rises
+    by 0.1 a second, so it first reaches 0.9 x 0.8 = 0.72 at 7.2 s; with
+    W_s = 0.9 kg/s and M a function of the turnovers, reaching it at 2 s
+    needs 0.9 x 7.2/2 = 3.24 kg/s, and the particle weighting reaching
+    0.9 x 0.9 = 0.81 at 8.1 s needs 0.9 x 8.1/2 = 3.645 kg/s."""
+
+    def run_numbers(self, **changes):
+        r = dict(vessel='no-plates', particles=10000, u_m_s=2.5, time_s=12.0,
+                 label='mix_noplates_n10000_u2.5', W_s_kg_s=0.9, turnover_s=3.5,
+                 M_papers_left_right=0.85, M_papers_at_turnover=0.35, level_cells=0.72,
+                 level_particles=0.81, t_reach_cells_s=7.2, t_reach_particles_s=8.1)
+        r.update(changes)
+        return r
+
+    def test_first_reach_and_interpolation(self):
+        from spoutlab.protocols import mixing as protocol
+        t = [0.1 * k for k in range(121)]
+        m = [0.01 * k for k in range(121)]
+        self.assertAlmostEqual(protocol.first_reach(t, m, 0.72), 7.2)
+        self.assertIsNone(protocol.first_reach(t, m, 1.5))
+        self.assertAlmostEqual(protocol.interpolate(t, m, 3.55), 0.355)
+        self.assertIsNone(protocol.interpolate(t, m, 13.0))
+
+    def test_needed_rate(self):
+        from spoutlab.protocols import results
+        rows, keys = results.mixing_circulation([self.run_numbers()], 0.9)
+        values = {k[0]: float(k[1]) for k in keys}
+        self.assertAlmostEqual(values['mixing10k.Ws_needed_kg_s'], 3.24)
+        self.assertAlmostEqual(values['mixing10k.Ws_needed_kg_s_particles'], 3.645, places=2)
+        for k in keys:
+            self.assertTrue(k[4].startswith('weighting '), k)
+        self.assertIn('3.24 kg/s, 3.6 times', rows[0][1])
+
+    def test_not_reached_gives_no_key(self):
+        from spoutlab.protocols import results
+        rows, keys = results.mixing_circulation(
+            [self.run_numbers(time_s=4.0, t_reach_cells_s=None, t_reach_particles_s=None)], 0.9)
+        self.assertEqual(keys, [])
+        self.assertIn('not reached', rows[0][1])
+
+
 if __name__ == '__main__':
     unittest.main()
