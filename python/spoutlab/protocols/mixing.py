@@ -185,8 +185,10 @@ class Run:
         self.reach = {w: first_reach(self.t, self.series['%s %s' % (name, mixing.DEFAULT_SPLIT)],
                                      self.level[w])
                       for w, name in (('cells', 'M_papers'), ('particles', 'M_particles'))}
-        self.at_turnover = interpolate(self.t, self.series['M_papers ' + mixing.DEFAULT_SPLIT],
-                                       self.turnover)
+        # M at half a turnover and at one: alike in every run if M follows
+        # the turnovers
+        self.at_turnover = [interpolate(self.t, self.series['M_papers ' + mixing.DEFAULT_SPLIT],
+                                        f * self.turnover) for f in (0.5, 1.0)]
 
     def summary(self):
         f, lr, lu = self.final, mixing.DEFAULT_SPLIT, 'lower-upper'
@@ -279,7 +281,8 @@ def report(a):
             level_particles=float('%.3f' % r.level['particles']),
             t_reach_cells_s=reach(r.reach['cells']),
             t_reach_particles_s=reach(r.reach['particles']),
-            M_papers_at_turnover=None if r.at_turnover is None else float('%.3f' % r.at_turnover),
+            **{name: None if m is None else float('%.3f' % m) for name, m in zip(
+                ('M_papers_at_half_turnover', 'M_papers_at_turnover'), r.at_turnover)},
             **{key(k): float('%.3f' % r.final[k]) for k in COLUMNS})
             for r, s in zip(runs, shown)]}, f, indent=1)
         f.write('\n')

@@ -544,7 +544,7 @@ def mixing_section(case):
     for r in numbers['runs']:
         label, vessel = r['label'], r['vessel']
         n, u, t_run = r['particles'], r['u_m_s'], '%.3g' % r['time_s']
-        M = {k: '%.3f' % r[k] for k in r if k.startswith('M_') and k != 'M_papers_at_turnover'}
+        M = {k: '%.3f' % r[k] for k in r if k.startswith('M_') and '_at_' not in k}
         grid = [z for z in r['cell_sizes'] if (z['dx_mm'], z['dz_mm']) == (11, 19)][0]
         times.add(float(t_run))
         tag = '' if float(t_run) == mixing_protocol.DEFAULT_TIME else '_t%g' % float(t_run)
@@ -617,10 +617,14 @@ def mixing_circulation(runs, level):
     if not bed:
         return [], []
     rows, keys = [], []
-    spread = '; '.join('%g m/s, %.3g s: W_s %.3f kg/s, turnover %.2f s, M(turnover) %s'
-                       % (r['u_m_s'], r['time_s'], r['W_s_kg_s'], r['turnover_s'],
-                          '-' if r.get('M_papers_at_turnover') is None
-                          else '%.3f' % r['M_papers_at_turnover']) for r in bed)
+    def at(r, name):
+        return '-' if r.get(name) is None else '%.3f' % r[name]
+
+    spread = '; '.join('%g m/s, %.3g s: W_s %.3f kg/s, turnover %.2f s, M_papers at half a '
+                       'turnover %s, at one %s' % (
+                           r['u_m_s'], r['time_s'], r['W_s_kg_s'], r['turnover_s'],
+                           at(r, 'M_papers_at_half_turnover'), at(r, 'M_papers_at_turnover'))
+                       for r in bed)
     title = 'W_s the papers\' M = %g after 2 s would need (10 000 particles)' % level
     paper = 'M 0.9-1 after 2 s (Fig 10b)'
     reached = [r for r in bed if r.get('t_reach_cells_s') is not None]
