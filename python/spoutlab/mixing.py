@@ -23,22 +23,30 @@ split line (x = median x for left-right, z = median z for lower-upper; the
 other family through x = 0 and z = 0), so at t = 0 every cell holds one
 group only and both indices are exactly 0, as the papers state.
 
-With x_c the fraction of A in cell c, n_c its particles, N the particles in
-the cells used and xbar = (A in those cells)/N:
+With x_c the fraction of A in cell c, n_c its particles, K the cells used
+and N the particles in them:
 
   papers  M = 1 - sigma_p/sigma_0,  sigma_0^2 = xbar (1 - xbar)
   Lacey   M = (sigma_0^2 - sigma_p^2)/(sigma_0^2 - sigma_r^2)
 
-Weighting (`particles`, the default): sigma_p^2 = sum n_c (x_c - xbar)^2 / N,
-sigma_r^2 = xbar (1 - xbar) K/N with K cells: the variance seen by a particle
-picked at random.  A completely segregated bed gives sigma_p = sigma_0, M = 0,
-for any cells, and sparsely filled cells (the fountain, slivers at the base
-and walls) count only by what they hold.  `cells` is the papers' literal
-sum over cells, sigma_p^2 = sum (x_c - xbar)^2 / K, sigma_r^2 = xbar(1 - xbar)
-mean(1/n_c): a cell of 2 particles then weighs as much as one of 270 and
-its composition, 0, 1/2 or 1, inflates sigma_p; a segregated bed gives 0
-only if the A cells are the fraction xbar of the cells.  Either way, cells
-with fewer than `min_count` particles (default 10) are left out.
+Two weightings of sigma_p^2, both written:
+
+  cells      (the headline, M_papers and M_lacey) the papers' eq 18 as
+             written: sigma_p^2 = sum (x_c - xbar)^2 / K, every cell weighs
+             one, with xbar the papers' "theoretical average", the fraction
+             of A among all labelled particles (1/2 for the halves here),
+             and sigma_r^2 = xbar (1 - xbar) mean(1/n_c).  A cell of 12
+             particles weighs as much as one of 270, so sparse cells (the
+             fountain, slivers at the base and walls) inflate sigma_p.  With
+             xbar = 1/2 a segregated bed gives exactly 0 and no bed less.
+  particles  (M_particles, M_lacey_particles) sigma_p^2 = sum n_c (x_c -
+             xbar)^2 / N with xbar = (A in the cells used)/N, sigma_r^2 =
+             xbar (1 - xbar) K/N: the variance seen by a particle picked at
+             random; a segregated bed gives exactly 0 for any cells, and a
+             sparse cell counts only by what it holds.
+
+Either way, cells with fewer than `min_count` particles (default 10) are
+left out.
 
 For a randomly labelled bed (N particles, K cells) Lacey's M has the
 expectation N/(N - 1) (about 1), and the papers' M the finite-sample floor
@@ -46,11 +54,11 @@ expectation N/(N - 1) (about 1), and the papers' M the finite-sample floor
 the particles per cell: 0.94 for the default cell.  The papers' 0.9-1 for a
 well-mixed bed therefore needs cells of more than about 100 particles;
 with the gas cells (11 x 19 mm, about 18 particles) the papers' form could
-not pass 0.77.
+not pass 0.77.  The cells weighting has about the same floor,
+1 - sqrt(mean(1/n_c)), lower where cells are sparse.
 
 usage: python3 -m spoutlab.mixing CASE [--split {left-right,lower-upper,both}]
-           [--cell DX DZ] [--min-count N] [--weighting {particles,cells}]
-           [--scan-cells] [--no-vtp] [--no-plot]
+           [--cell DX DZ] [--min-count N] [--scan-cells] [--no-vtp] [--no-plot]
 writes CASE/postProcessing/mixing.csv and mixing.png; with --scan-cells
 mixingCellSize.csv; and postProcessing/mixingParticles/ (see write_labelled).
 """
@@ -65,8 +73,12 @@ SPLITS = ('left-right', 'lower-upper')
 DEFAULT_SPLIT = 'left-right'
 DEFAULT_CELL_MM = (55.0, 57.0)
 DEFAULT_MIN_COUNT = 10
-# the cell sizes of --scan-cells [mm]: 1 x 1, 3 x 2, 5 x 3 and 9 x 6 gas cells
-SCAN_CELLS_MM = ((11.0, 19.0), (33.0, 38.0), (55.0, 57.0), (99.0, 114.0))
+# the cell sizes of --scan-cells [mm]: 1 x 1 (the papers' grid), 2 x 2, 3 x 2,
+# 5 x 3 (the default), 7 x 4 and 9 x 6 gas cells of 11 x 19 mm
+PAPERS_CELL_MM = (11.0, 19.0)
+SCAN_CELLS_MM = (PAPERS_CELL_MM, (22.0, 38.0), (33.0, 38.0), DEFAULT_CELL_MM, (77.0, 76.0),
+                 (99.0, 114.0))
+WEIGHTINGS = ('cells', 'particles')
 
 
 def segregated_labels(ids, points, split):
@@ -109,11 +121,12 @@ class SamplingGrid:
 class MixingIndex:
     """Both forms of the index for one labelled particle field.
 
-    counts: {cell: (particles, particles A)}.  Attributes: cells (K kept),
+    counts: {cell: (particles, particles A)}; weighting cells (the papers'
+    eq 18, the default) or particles.  Attributes: cells (K kept),
     particles (N in them), xbar, sigma0_sq, sigma_sq, sigmar_sq, papers,
     lacey (nan when undefined: no cell kept, or one label only)."""
 
-    def __init__(self, counts, min_count=DEFAULT_MIN_COUNT, weighting='particles'):
+    def __init__(self, counts, min_count=DEFAULT_MIN_COUNT, weighting='cells'):
         if weighting not in ('particles', 'cells'):
             raise ValueError('weighting must be particles or cells, got %r' % weighting)
         kept = [(n, a) for n, a in counts.values() if n >= min_count]
@@ -124,7 +137,11 @@ class MixingIndex:
         self.xbar = self.sigma0_sq = self.sigma_sq = self.sigmar_sq = float('nan')
         if not kept:
             return
-        xbar = sum(a for _, a in kept) / self.particles
+        if weighting == 'particles':
+            xbar = sum(a for _, a in kept) / self.particles
+        else:
+            xbar = (sum(a for _, a in counts.values())
+                    / sum(n for n, _ in counts.values()))
         sigma0_sq = xbar * (1 - xbar)
         if weighting == 'particles':
             sigma_sq = sum(n * (a / n - xbar) ** 2 for n, a in kept) / self.particles
@@ -138,6 +155,15 @@ class MixingIndex:
             self.papers = 1 - math.sqrt(sigma_sq / sigma0_sq)
             if sigma0_sq > sigmar_sq:
                 self.lacey = (sigma0_sq - sigma_sq) / (sigma0_sq - sigmar_sq)
+
+    @property
+    def random_level(self):
+        """1 - sigma_r/sigma_0: about the papers' M of a randomly labelled
+        bed with these cells (a little below its expectation, which takes
+        the mean of the square root)."""
+        if not self.sigma0_sq > 0:
+            return float('nan')
+        return 1 - math.sqrt(self.sigmar_sq / self.sigma0_sq)
 
     @property
     def mean_count(self):
@@ -159,8 +185,32 @@ def cell_counts(grid, ids, points, labels):
 
 
 def mixing_index(ids, points, labels, grid, min_count=DEFAULT_MIN_COUNT,
-                 weighting='particles'):
+                 weighting='cells'):
     return MixingIndex(cell_counts(grid, ids, points, labels), min_count, weighting)
+
+
+def both_weightings(ids, points, labels, grid, min_count=DEFAULT_MIN_COUNT):
+    """{weighting: MixingIndex} from one count of the cells."""
+    counts = cell_counts(grid, ids, points, labels)
+    return {w: MixingIndex(counts, min_count, w) for w in WEIGHTINGS}
+
+
+# the columns of mixing.csv per split: (name, weighting, attribute)
+COLUMNS = (('M_papers', 'cells', 'papers'), ('M_lacey', 'cells', 'lacey'),
+           ('M_particles', 'particles', 'papers'), ('M_lacey_particles', 'particles', 'lacey'))
+
+
+def column_names(splits):
+    """mixing.csv's M columns: the cells-weighted pair for every split, then
+    the particle-weighted pair (so that the first four columns stay M_papers
+    and M_lacey of left-right and lower-upper)."""
+    return ['%s %s' % (name, s) for weighting in WEIGHTINGS for s in splits
+            for name, w, _ in COLUMNS if w == weighting]
+
+
+def column_values(by_split, splits):
+    return [getattr(by_split[s][w], attr) for weighting in WEIGHTINGS for s in splits
+            for _, w, attr in COLUMNS if w == weighting]
 
 
 # --- the particle files of a case ------------------------------------------------
@@ -211,10 +261,10 @@ def write_collection(folder, entries):
 
 # --- the front end ----------------------------------------------------------------
 
-def evaluate_case(case, splits, cell, min_count, weighting, write_vtp=True,
+def evaluate_case(case, splits, cell, min_count=DEFAULT_MIN_COUNT, write_vtp=True,
                   scan=False, plot=True):
     """Writes mixing.csv (and the rest) for a case; returns the rows
-    [(time, {split: MixingIndex})]."""
+    [(time, {split: {weighting: MixingIndex}})]."""
     files = sc.particle_files(case)
     if not files:
         raise SystemExit('mixing: %s: no particle files particles/particles_<time>.vtp'
@@ -234,11 +284,10 @@ def evaluate_case(case, splits, cell, min_count, weighting, write_vtp=True,
     rows, scan_rows, collection = [], [], []
     for t, path in files:
         ids, points = read_particles(path) if path != files[0][1] else (ids0, points0)
-        rows.append((t, {s: mixing_index(ids, points, labels[s], grids[s], min_count, weighting)
+        rows.append((t, {s: both_weightings(ids, points, labels[s], grids[s], min_count)
                          for s in splits}))
         for (s, size), g in scan_grids.items():
-            scan_rows.append((t, s, size, mixing_index(ids, points, labels[s], g, min_count,
-                                                       weighting)))
+            scan_rows.append((t, s, size, both_weightings(ids, points, labels[s], g, min_count)))
         if write_vtp:
             name = os.path.basename(path)
             write_labelled(path, os.path.join(vtp_dir, name), ids, labels)
@@ -247,21 +296,23 @@ def evaluate_case(case, splits, cell, min_count, weighting, write_vtp=True,
         write_collection(vtp_dir, collection)
     csv = os.path.join(out, 'mixing.csv')
     with open(csv, 'w') as f:
-        f.write('time [s]' + ''.join(',M_papers %s,M_lacey %s' % (s, s) for s in splits)
-                + ',sampling cells,particles per cell\n')
+        f.write(','.join(['time [s]'] + column_names(splits)
+                         + ['sampling cells', 'particles per cell']) + '\n')
         for t, by_split in rows:
-            first = by_split[splits[0]]
-            f.write('%.6g' % t + ''.join(',%.6g,%.6g' % (by_split[s].papers, by_split[s].lacey)
-                                         for s in splits)
-                    + ',%d,%.4g\n' % (first.cells, first.mean_count))
+            first = by_split[splits[0]]['cells']
+            f.write(','.join(['%.6g' % t] + ['%.6g' % v for v in column_values(by_split, splits)]
+                             + ['%d' % first.cells, '%.4g' % first.mean_count]) + '\n')
     if scan:
         with open(os.path.join(out, 'mixingCellSize.csv'), 'w') as f:
             f.write('time [s],split,cell dx [mm],cell dz [mm],sampling cells,'
-                    'particles per cell,M_papers,M_lacey,random-mixing M_papers\n')
+                    'particles per cell,M_papers,M_lacey,M_particles,M_lacey_particles,'
+                    'random-mixing M_papers,random-mixing M_particles\n')
             for t, s, size, m in scan_rows:
-                f.write('%.6g,%s,%g,%g,%d,%.4g,%.6g,%.6g,%.6g\n'
-                        % (t, s, size[0], size[1], m.cells, m.mean_count, m.papers, m.lacey,
-                           random_papers_expectation(m.particles, m.cells)))
+                c, p = m['cells'], m['particles']
+                f.write('%.6g,%s,%g,%g,%d,%.4g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g\n'
+                        % (t, s, size[0], size[1], c.cells, c.mean_count, c.papers, c.lacey,
+                           p.papers, p.lacey, c.random_level,
+                           random_papers_expectation(p.particles, p.cells)))
     if plot:
         plot_history(csv, splits, os.path.join(out, 'mixing.png'))
     return rows
@@ -281,12 +332,14 @@ def random_papers_expectation(n_particles, n_cells):
 
 
 def plot_history(csv, splits, png):
+    names = column_names(splits)
     curves = []
-    for i, s in enumerate(splits):
-        curves.append('"%s" skip 1 using 1:%d with linespoints title "papers, %s"'
-                      % (csv, 2 + 2 * i, s))
-        curves.append('"%s" skip 1 using 1:%d with linespoints dt 2 title "Lacey, %s"'
-                      % (csv, 3 + 2 * i, s))
+    for s in splits:
+        for name, dash, title in (('M_papers', '', 'papers, cells'),
+                                  ('M_particles', ' dt 3', 'papers, particles'),
+                                  ('M_lacey', ' dt 2', 'Lacey, cells')):
+            curves.append('"%s" skip 1 using 1:%d with linespoints%s title "%s, %s"'
+                          % (csv, 2 + names.index('%s %s' % (name, s)), dash, title, s))
     sc.plot(png, 'set datafile separator ","\nset grid\nset key bottom right\n'
             'set title "Degree of mixing (eqs 17-19)"\nset xlabel "time [s]"\n'
             'set ylabel "M"\nset yrange [-0.1:1.1]\nplot ' + ', \\\n     '.join(curves) + '\n')
@@ -295,7 +348,9 @@ def plot_history(csv, splits, png):
 def main(argv=None):
     p = cli.Parser(prog='mixing',
         description='Degree of particle mixing of a spouted-bed case (eqs 17-19 and '
-                    'Lacey) from its particle files; writes postProcessing/mixing.csv, '
+                    'Lacey) from its particle files: M_papers sums over the sampling cells '
+                    'as eq 18 does (every cell weighs one), M_particles weights each cell '
+                    'by its particles; writes postProcessing/mixing.csv, '
                     'mixing.png and the labelled particles for ParaView '
                     '(postProcessing/mixingParticles/particles.pvd).')
     p.add_argument('case', help='case directory (holding particles/particles_<time>.vtp)')
@@ -309,9 +364,6 @@ def main(argv=None):
     p.add_argument('--min-count', type=int, default=DEFAULT_MIN_COUNT,
                    help='cells with fewer particles are left out (default %d)'
                         % DEFAULT_MIN_COUNT)
-    p.add_argument('--weighting', choices=('particles', 'cells'), default='particles',
-                   help='weight of a cell in sigma_p^2: its particles (default) or one '
-                        '(the papers\' literal sum over cells)')
     p.add_argument('--scan-cells', action='store_true',
                    help='also write postProcessing/mixingCellSize.csv: M for cells of '
                         + ', '.join('%gx%g' % s for s in SCAN_CELLS_MM) + ' mm')
@@ -324,17 +376,18 @@ def main(argv=None):
         p.error('--min-count: expected a whole number >= 1, got %d' % a.min_count)
     splits = (DEFAULT_SPLIT, 'lower-upper') if a.split == 'both' else (a.split,)
     rows = evaluate_case(a.case, splits, (a.cell[0] / 1000, a.cell[1] / 1000), a.min_count,
-                         a.weighting, write_vtp=not a.no_vtp, scan=a.scan_cells,
-                         plot=not a.no_plot)
+                         write_vtp=not a.no_vtp, scan=a.scan_cells, plot=not a.no_plot)
     t, last = rows[-1]
-    m = last[splits[0]]
+    m = last[splits[0]]['cells']
     print('mixing: %d particle files; sampling cells %g x %g mm, %d cells of %.0f particles '
           'on average at t = %g s' % (len(rows), a.cell[0], a.cell[1], m.cells, m.mean_count, t))
     for s in splits:
-        print('mixing: %-11s M_papers %.3f, M_lacey %.3f at t = %g s (random mixing: '
-              'M_papers %.3f, M_lacey 1)' % (s, last[s].papers, last[s].lacey, t,
-                                             random_papers_expectation(last[s].particles,
-                                                                       last[s].cells)))
+        c, p = last[s]['cells'], last[s]['particles']
+        print('mixing: %-11s M_papers %.3f (cells weighted, eq 18), M_lacey %.3f; weighted by '
+              'particles M_particles %.3f, M_lacey_particles %.3f at t = %g s (random mixing: '
+              'M_papers about %.3f, M_particles %.3f, M_lacey 1)'
+              % (s, c.papers, c.lacey, p.papers, p.lacey, t, c.random_level,
+                 random_papers_expectation(p.particles, p.cells)))
     print('mixing: wrote %s' % os.path.join(a.case, 'postProcessing', 'mixing.csv'))
     return 0
 

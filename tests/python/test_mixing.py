@@ -89,7 +89,7 @@ class HandComputed(unittest.TestCase):
     counts = {(0, 0): (10, 10), (1, 0): (10, 0), (2, 0): (4, 2)}
 
     def test_count_weighted(self):
-        m = mixing.MixingIndex(self.counts, min_count=1)
+        m = mixing.MixingIndex(self.counts, min_count=1, weighting='particles')
         # sigma^2 = (10/4 + 10/4 + 0)/24, sigma_r^2 = (1/4) 3/24
         self.assertAlmostEqual(m.sigma_sq, 5 / 24)
         self.assertAlmostEqual(m.papers, 1 - math.sqrt((5 / 24) / 0.25))
@@ -101,11 +101,68 @@ class HandComputed(unittest.TestCase):
         self.assertAlmostEqual(m.papers, 1 - math.sqrt((1 / 6) / 0.25))
         self.assertAlmostEqual(m.lacey, (0.25 - 1 / 6) / (0.25 - 0.25 * 0.45 / 3))
 
+    def test_the_cells_weighting_is_the_default(self):
+        m = mixing.MixingIndex(self.counts, min_count=1)
+        self.assertAlmostEqual(m.papers, 1 - math.sqrt((1 / 6) / 0.25))
+
     def test_cells_below_the_minimum_are_left_out(self):
-        m = mixing.MixingIndex(self.counts, min_count=5)
-        self.assertEqual((m.cells, m.particles, m.skipped), (2, 20, 4))
-        self.assertAlmostEqual(m.papers, 0.0)
-        self.assertAlmostEqual(m.lacey, 0.0)
+        for weighting in ('particles', 'cells'):
+            m = mixing.MixingIndex(self.counts, min_count=5, weighting=weighting)
+            self.assertEqual((m.cells, m.particles, m.skipped), (2, 20, 4))
+            self.assertAlmostEqual(m.papers, 0.0, msg=weighting)
+            self.assertAlmostEqual(m.lacey, 0.0, msg=weighting)
+
+
+class TwoCellsUnequal(unittest.TestCase):
+    """Two cells (particles, A): (30, 20) and (10, 0); 20 of the 40 are A,
+    xbar = 1/2 either way, sigma_0^2 = 1/4.
+
+    cells (eq 18 over N = 2 cells): x = 2/3 and 0, sigma_p^2 =
+    ((1/6)^2 + (1/2)^2)/2 = (1/36 + 9/36)/2 = 5/36, sigma_p/sigma_0 =
+    sqrt(20/36) = sqrt(5)/3, M = 1 - sqrt(5)/3 = 0.254644; sigma_r^2 =
+    (1/4)(1/30 + 1/10)/2 = 1/60, Lacey (1/4 - 5/36)/(1/4 - 1/60) =
+    (4/36)/(14/60) = 10/21.
+    particles: sigma_p^2 = (30 (1/36) + 10 (9/36))/40 = (120/36)/40 = 1/12,
+    sigma_p/sigma_0 = sqrt(1/3), M = 1 - 1/sqrt(3) = 0.422650; sigma_r^2 =
+    (1/4)(2/40) = 1/80, Lacey (1/4 - 1/12)/(1/4 - 1/80) = (1/6)/(19/80) =
+    40/57."""
+    counts = {(0, 0): (30, 20), (1, 0): (10, 0)}
+
+    def test_cells(self):
+        m = mixing.MixingIndex(self.counts, min_count=1, weighting='cells')
+        self.assertAlmostEqual(m.papers, 0.2546440075, places=9)
+        self.assertAlmostEqual(m.lacey, 10 / 21)
+
+    def test_particles(self):
+        m = mixing.MixingIndex(self.counts, min_count=1, weighting='particles')
+        self.assertAlmostEqual(m.papers, 0.4226497308, places=9)
+        self.assertAlmostEqual(m.lacey, 40 / 57)
+
+    def test_the_front_end_writes_both_columns(self):
+        # the same two cells as particle files: the t = 0 bed puts the 20
+        # left-most particles (A) left of x = 0; at t = 1 s 20 A and 10 B
+        # sit in the cell x in [-55, 0) mm and 10 B in [0, 55) mm
+        case = tempfile.mkdtemp()
+        self.addCleanup(shutil.rmtree, case)
+        os.mkdir(os.path.join(case, 'particles'))
+        ids = list(range(1, 41))
+        left = [(-0.050 + 0.001 * k, 0.02, 0.010) for k in range(30)]
+        right = [(0.005 + 0.001 * k, 0.02, 0.010) for k in range(10)]
+        # t = 0: ids 1-20 left (A), 21-40 right (B)
+        t0 = [(-0.050 + 0.002 * k, 0.02, 0.010) for k in range(20)] + \
+             [(0.005 + 0.002 * k, 0.02, 0.010) for k in range(20)]
+        write_vtp(os.path.join(case, 'particles', 'particles_0.vtp'), ids, t0)
+        # t = 1: ids 1-30 left (20 A + 10 B), ids 31-40 right (B)
+        write_vtp(os.path.join(case, 'particles', 'particles_1.vtp'), ids, left + right)
+        mixing.main([case, '--no-plot', '--no-vtp', '--split', 'left-right', '--min-count', '1'])
+        with open(os.path.join(case, 'postProcessing', 'mixing.csv')) as f:
+            head, _, t1 = [line.split(',') for line in f.read().splitlines()]
+        row = dict(zip(head, t1))
+        self.assertAlmostEqual(float(row['M_papers left-right']), 0.254644, places=5)
+        self.assertAlmostEqual(float(row['M_lacey left-right']), 10 / 21, places=5)
+        self.assertAlmostEqual(float(row['M_particles left-right']), 0.422650, places=5)
+        self.assertAlmostEqual(float(row['M_lacey_particles left-right']), 40 / 57, places=5)
+        self.assertEqual(int(row['sampling cells']), 2)
 
     def test_one_label_only_is_undefined(self):
         m = mixing.MixingIndex({(0, 0): (10, 10), (1, 0): (12, 12)})
@@ -186,14 +243,18 @@ class FrontEnd(unittest.TestCase):
         mixing.main([self.case, '--no-plot'])
         with open(os.path.join(self.case, 'postProcessing', 'mixing.csv')) as f:
             lines = f.read().splitlines()
-        self.assertEqual(lines[0].split(',')[:5], ['time [s]', 'M_papers left-right',
-                                                   'M_lacey left-right', 'M_papers lower-upper',
-                                                   'M_lacey lower-upper'])
+        head = lines[0].split(',')
+        self.assertEqual(head, ['time [s]', 'M_papers left-right', 'M_lacey left-right',
+                                'M_papers lower-upper', 'M_lacey lower-upper',
+                                'M_particles left-right', 'M_lacey_particles left-right',
+                                'M_particles lower-upper', 'M_lacey_particles lower-upper',
+                                'sampling cells', 'particles per cell'])
         t0, t1 = ([float(v) for v in line.split(',')] for line in lines[1:])
-        self.assertEqual(t0[1:5], [0.0, 0.0, 0.0, 0.0])
+        self.assertEqual(t0[1:9], [0.0] * 8)
         # one labelling of 600 particles in ~16 cells: within 4 SD of random
-        self.assertAlmostEqual(t1[2], 1.0, delta=4 * 0.011)
-        self.assertAlmostEqual(t1[1], 1 - 1 / math.sqrt(t1[6]), delta=4 * 0.040)
+        for papers, lacey in ((1, 2), (5, 6)):
+            self.assertAlmostEqual(t1[lacey], 1.0, delta=4 * 0.011)
+            self.assertAlmostEqual(t1[papers], 1 - 1 / math.sqrt(t1[10]), delta=4 * 0.040)
         # the labelled copy of t = 1 carries each particle's t = 0 label
         folder = os.path.join(self.case, mixing.LABELLED_DIR)
         copy = os.path.join(folder, 'particles_1.vtp')
@@ -215,15 +276,59 @@ class FrontEnd(unittest.TestCase):
             rows = f.read().splitlines()[1:]
         self.assertEqual(len(rows), 2 * len(mixing.SCAN_CELLS_MM))
         at_zero = [r.split(',') for r in rows if r.startswith('0,')]
-        # the lattice is one particle deep: the gas-cell size holds fewer
-        # than min-count particles, so it keeps no cell; the others are 0
+        # the lattice is one particle deep, 11 mm apart: cells of 11 x 19 mm
+        # (1-2 particles) and 22 x 38 mm (2 x 3-4) hold fewer than min-count,
+        # so they keep no cell; 33 x 38 mm holds 9 or 12; all kept are 0
         used = [r for r in at_zero if int(r[4]) > 0]
-        self.assertEqual(len(used), len(mixing.SCAN_CELLS_MM) - 1)
-        self.assertEqual([float(r[6]) for r in used], [0.0] * len(used))
+        self.assertEqual([(float(r[2]), float(r[3])) for r in used],
+                         [s for s in mixing.SCAN_CELLS_MM if s[0] >= 33])
+        self.assertEqual([float(r[k]) for r in used for k in (6, 8)], [0.0] * 2 * len(used))
 
     def test_bad_cell_size_is_one_line(self):
         with self.assertRaises(SystemExit):
             mixing.main([self.case, '--cell', '0', '57'])
+
+
+class CirculationNeeded(unittest.TestCase):
+    """The W_s the papers' 2 s would need, from a made-up M(t): M rises
+    by 0.1 a second, so it first reaches 0.9 x 0.8 = 0.72 at 7.2 s; with
+    W_s = 0.9 kg/s and M a function of the turnovers, reaching it at 2 s
+    needs 0.9 x 7.2/2 = 3.24 kg/s, and the particle weighting reaching
+    0.9 x 0.9 = 0.81 at 8.1 s needs 0.9 x 8.1/2 = 3.645 kg/s."""
+
+    def run_numbers(self, **changes):
+        r = dict(vessel='no-plates', particles=10000, u_m_s=2.5, time_s=12.0,
+                 label='mix_noplates_n10000_u2.5', W_s_kg_s=0.9, turnover_s=3.5,
+                 M_papers_left_right=0.85, M_papers_at_turnover=0.35, level_cells=0.72,
+                 level_particles=0.81, t_reach_cells_s=7.2, t_reach_particles_s=8.1)
+        r.update(changes)
+        return r
+
+    def test_first_reach_and_interpolation(self):
+        from spoutlab.protocols import mixing as protocol
+        t = [0.1 * k for k in range(121)]
+        m = [0.01 * k for k in range(121)]
+        self.assertAlmostEqual(protocol.first_reach(t, m, 0.72), 7.2)
+        self.assertIsNone(protocol.first_reach(t, m, 1.5))
+        self.assertAlmostEqual(protocol.interpolate(t, m, 3.55), 0.355)
+        self.assertIsNone(protocol.interpolate(t, m, 13.0))
+
+    def test_needed_rate(self):
+        from spoutlab.protocols import results
+        rows, keys = results.mixing_circulation([self.run_numbers()], 0.9)
+        values = {k[0]: float(k[1]) for k in keys}
+        self.assertAlmostEqual(values['mixing10k.Ws_needed_kg_s'], 3.24)
+        self.assertAlmostEqual(values['mixing10k.Ws_needed_kg_s_particles'], 3.645, places=2)
+        for k in keys:
+            self.assertTrue(k[4].startswith('weighting '), k)
+        self.assertIn('3.24 kg/s, 3.6 times', rows[0][1])
+
+    def test_not_reached_gives_no_key(self):
+        from spoutlab.protocols import results
+        rows, keys = results.mixing_circulation(
+            [self.run_numbers(time_s=4.0, t_reach_cells_s=None, t_reach_particles_s=None)], 0.9)
+        self.assertEqual(keys, [])
+        self.assertIn('not reached', rows[0][1])
 
 
 if __name__ == '__main__':

@@ -13,18 +13,33 @@ finished runs are kept, so running the command again after an interruption
 continues, and several invocations on different points may run side by
 side.
 
+M is computed as spoutlab.mixing does, both weightings: M_papers sums
+over the sampling cells as the papers' eq 18 does (N = the number of cells,
+every cell weighs one; the headline), M_particles weights each cell by its
+particles; at the default 55 x 57 mm cells and, with the other sizes of
+--scan-cells, at the papers' 11 x 19 mm grid (a run whose mixing.csv lacks
+either is evaluated again from its particle files).  Each run's W_s (its
+circulation.csv, the last 1.8 s) gives the bed's turnover time m_bed/W_s,
+and the first time M reaches 0.9 of its random-mixing value at 55 x 57 mm
+(the papers' Fig 10b after 2 s on their scale, where random mixing gives 1;
+our cells cannot give more than about 0.88-0.92) is noted.
+
 Results: mixing.txt (every finished run; mixing.json, its numbers for
-protocols/results), mixing.csv, and a figure per bed,
-mixing_<vessel>_n<N>.png (M_papers and M_Lacey, left-right, against time);
-snapshots like the draft-plate paper's Figs 8-9 per run,
-snapshot_<run>_t<t>_{velocity,label}.png: the particles coloured by their
-vertical velocity and by their A/B label at 1 s and at the end.  The
-labelled particle files for ParaView are in each run's
+protocols/results), mixing.csv (M against time), mixingCellSize.csv (M_final
+against the sampling-cell size), and two figures per bed,
+mixing_<vessel>_n<N>.png (M_papers and M_particles, left-right, against
+time) and mixing_cellsize_<vessel>_n<N>.png (M_final against the cell size
+beside the random-mixing level); snapshots like the draft-plate paper's
+Figs 8-9 per run, snapshot_<run>_t<t>_{velocity,label}.png: the particles
+coloured by their vertical velocity and by their A/B label at 1 s and at
+the end.  The labelled particle files for ParaView are in each run's
 postProcessing/mixingParticles/particles.pvd (arrays label_left-right,
 label_lower-upper).
 """
 import argparse
+import csv
 import json
+import math
 import os
 import re
 import sys
@@ -83,33 +98,112 @@ def label(vessel, n, u):
     return 'mix_%s_n%d_u%g' % (vessel.replace('-', ''), n, u)
 
 
+SPLITS = (mixing.DEFAULT_SPLIT, 'lower-upper')
+# the M columns of a run's mixing.csv: cells-weighted (the papers' eq 18),
+# then weighted by particles
+COLUMNS = mixing.column_names(SPLITS)
+# the papers' M after 2 s of the 10 000-particle bed (Fig 10b), where random
+# mixing gives 1
+LEVEL = 0.9
+
+
+def evaluate(work):
+    """The run's postProcessing/mixing.csv with both weightings and
+    mixingCellSize.csv with the cell sizes, computed again from its particle
+    files unless the case's evaluate already wrote them so."""
+    post = os.path.join(work, 'postProcessing')
+    path = os.path.join(post, 'mixing.csv')
+    head = open(path).readline().strip().split(',') if os.path.isfile(path) else []
+    if head[1:1 + len(COLUMNS)] != COLUMNS or not os.path.isfile(
+            os.path.join(post, 'mixingCellSize.csv')):
+        cell = mixing.DEFAULT_CELL_MM
+        mixing.evaluate_case(work, SPLITS, (cell[0] / 1000, cell[1] / 1000), write_vtp=False,
+                             scan=True)
+
+
+def first_reach(t, m, level):
+    """The first time M reaches level, linear between the samples (None if
+    it never does)."""
+    for k in range(1, len(t)):
+        if m[k] >= level > m[k - 1]:
+            return t[k - 1] + (level - m[k - 1]) / (m[k] - m[k - 1]) * (t[k] - t[k - 1])
+    return None
+
+
+def interpolate(t, m, when):
+    """M at time when, linear between the samples (None outside them)."""
+    for k in range(1, len(t)):
+        if t[k - 1] <= when <= t[k]:
+            return m[k - 1] + (when - t[k - 1]) / (t[k] - t[k - 1]) * (m[k] - m[k - 1])
+    return None
+
+
 class Run:
-    """A finished run: M against time from its postProcessing/mixing.csv."""
+    """A finished run: M against time from its postProcessing/mixing.csv,
+    M_final against the sampling-cell size from mixingCellSize.csv, W_s from
+    its circulation.csv."""
 
     def __init__(self, vessel, n, u, final):
         self.vessel, self.n, self.u = vessel, n, u
         self.label = label(vessel, n, u)
         self.work = os.path.join('runs', self.label)
+        evaluate(self.work)
         head, *rows = [r.strip().split(',') for r in
                        open(os.path.join(self.work, 'postProcessing', 'mixing.csv'))]
         col = {name: k for k, name in enumerate(head)}
         self.t = [float(r[0]) for r in rows]
-        self.series = {name: [float(r[col[name]]) for r in rows] for name in head[1:5]}
+        self.series = {name: [float(r[col[name]]) for r in rows] for name in COLUMNS}
         end = self.t[-1]
         self.final = {name: mean([m for t, m in zip(self.t, v) if t >= end - final - 1e-6])
                       for name, v in self.series.items()}
         self.cells = int(rows[-1][col['sampling cells']])
         self.per_cell = float(rows[-1][col['particles per cell']])
+        # M_final of the left-right split at every cell size, both weightings
+        by_size = {}
+        for r in list(csv.DictReader(open(os.path.join(
+                self.work, 'postProcessing', 'mixingCellSize.csv')))):
+            if r['split'] != mixing.DEFAULT_SPLIT or float(r['time [s]']) < end - final - 1e-6:
+                continue
+            by_size.setdefault((float(r['cell dx [mm]']), float(r['cell dz [mm]'])), []).append(r)
+        self.sizes = [dict(dx_mm=dx, dz_mm=dz, **{
+            k.replace(' ', '_').replace('-', '_'): float('%.4g' % mean([float(r[k]) for r in rs]))
+            for k in ('sampling cells', 'particles per cell', 'M_papers', 'M_particles',
+                      'random-mixing M_papers', 'random-mixing M_particles')})
+            for (dx, dz), rs in sorted(by_size.items())]
+        self.papers_grid = [s for s in self.sizes
+                            if (s['dx_mm'], s['dz_mm']) == mixing.PAPERS_CELL_MM][0]
+        # the circulation: turnover m_bed/W_s, and when M first reaches LEVEL
+        g = spoutedbed.load(self.work)
+        self.bed_mass = n * g.particles['rhop'] * math.pi * (g.particles['dp'] / 1000) ** 3 / 6
+        self.w_s = circulation.w_s(self.work)
+        self.turnover = self.bed_mass / self.w_s if self.w_s > 0 else float('nan')
+        # the papers' 0.9 on their scale, where random mixing gives 1, is
+        # LEVEL times the random-mixing M of these cells on ours
+        default = [z for z in self.sizes if (z['dx_mm'], z['dz_mm']) == mixing.DEFAULT_CELL_MM][0]
+        self.level = {w: LEVEL * default['random_mixing_' + name]
+                      for w, name in (('cells', 'M_papers'), ('particles', 'M_particles'))}
+        self.reach = {w: first_reach(self.t, self.series['%s %s' % (name, mixing.DEFAULT_SPLIT)],
+                                     self.level[w])
+                      for w, name in (('cells', 'M_papers'), ('particles', 'M_particles'))}
+        # M at half a turnover and at one: alike in every run if M follows
+        # the turnovers
+        self.at_turnover = [interpolate(self.t, self.series['M_papers ' + mixing.DEFAULT_SPLIT],
+                                        f * self.turnover) for f in (0.5, 1.0)]
 
     def summary(self):
-        f = self.final
-        return ('%s: %s, %d particles, u_s = %g m/s, %.3g s: M_final %.3f (papers, left-right), '
-                'Lacey %.3f; lower-upper %.3f, Lacey %.3f; %d sampling cells of %.0f particles'
+        f, lr, lu = self.final, mixing.DEFAULT_SPLIT, 'lower-upper'
+        return ('%s: %s, %d particles, u_s = %g m/s, %.3g s: M_final %.3f (papers, cells '
+                'weighted as eq 18, left-right), weighted by particles %.3f, Lacey %.3f (by '
+                'particles %.3f); lower-upper %.3f (by particles %.3f), Lacey %.3f; %d sampling '
+                'cells of %.0f particles; at the papers\' 11 x 19 mm cells %.3f (by particles '
+                '%.3f, random mixing about %.3f); W_s %.3f kg/s, turnover m_bed/W_s %.2f s'
                 % (self.label, 'no draft plates' if self.vessel == 'no-plates' else
-                   'draft plates', self.n, self.u, self.t[-1], f['M_papers left-right'],
-                   f['M_lacey left-right'], f['M_papers lower-upper'], f['M_lacey lower-upper'],
-                   self.cells, self.per_cell))
-
+                   'draft plates', self.n, self.u, self.t[-1], f['M_papers ' + lr],
+                   f['M_particles ' + lr], f['M_lacey ' + lr], f['M_lacey_particles ' + lr],
+                   f['M_papers ' + lu], f['M_particles ' + lu], f['M_lacey ' + lu],
+                   self.cells, self.per_cell, self.papers_grid['M_papers'],
+                   self.papers_grid['M_particles'], self.papers_grid['random_mixing_M_papers'],
+                   self.w_s, self.turnover))
 
     def snapshots(self):
         """Figs 8-9: the labelled particles at 1 s and at the end, coloured
@@ -161,45 +255,90 @@ def finished_runs(final):
 def report(a):
     runs = finished_runs(a.final)
     lines = ['# degree of mixing: gas at u_s from the settled, segregated bed (t = 0); '
-             'M_final is the mean over the last %g s; sampling cells 55 x 57 mm' % a.final]
+             'M_final is the mean over the last %g s; sampling cells 55 x 57 mm and the '
+             'papers\' 11 x 19 mm; M_papers sums over the cells as eq 18 does (weighting '
+             'cells), M_particles weights each cell by its particles' % a.final]
     shown = [r.snapshots() for r in runs]
     lines += ['%s; snapshots: %s' % (r.summary(), ' '.join(s)) for r, s in zip(runs, shown)]
     text = '\n'.join(lines) + '\n'
     open('mixing.txt', 'w').write(text)
     sys.stdout.write(text)
+
+    def key(name):
+        return name.replace(' ', '_').replace('-', '_')
+
+    def reach(t):
+        return None if t is None else float('%.3g' % t)
+
     # the numbers as mixing.txt prints them, for protocols/results
     with open('mixing.json', 'w') as f:
-        json.dump({'settings': lines[0].lstrip('# '), 'runs': [dict(
+        json.dump({'settings': lines[0].lstrip('# '), 'level': LEVEL, 'runs': [dict(
             label=r.label, vessel=r.vessel, particles=r.n, u_m_s=float('%g' % r.u),
-            time_s=float('%.3g' % r.t[-1]), snapshots=s,
-            **{k.replace(' ', '_').replace('-', '_'): float('%.3f' % r.final[k])
-               for k in ('M_papers left-right', 'M_lacey left-right', 'M_papers lower-upper',
-                         'M_lacey lower-upper')}) for r, s in zip(runs, shown)]}, f, indent=1)
+            time_s=float('%.3g' % r.t[-1]), snapshots=s, cell_sizes=r.sizes,
+            W_s_kg_s=float('%.4g' % r.w_s), bed_mass_kg=float('%.4g' % r.bed_mass),
+            turnover_s=float('%.4g' % r.turnover),
+            level_cells=float('%.3f' % r.level['cells']),
+            level_particles=float('%.3f' % r.level['particles']),
+            t_reach_cells_s=reach(r.reach['cells']),
+            t_reach_particles_s=reach(r.reach['particles']),
+            **{name: None if m is None else float('%.3f' % m) for name, m in zip(
+                ('M_papers_at_half_turnover', 'M_papers_at_turnover'), r.at_turnover)},
+            **{key(k): float('%.3f' % r.final[k]) for k in COLUMNS})
+            for r, s in zip(runs, shown)]}, f, indent=1)
         f.write('\n')
     with open('mixing.csv', 'w') as f:
-        f.write('run,vessel,particles,superficial velocity [m/s],time [s],M_papers left-right,'
-                'M_lacey left-right,M_papers lower-upper,M_lacey lower-upper\n')
+        f.write('run,vessel,particles,superficial velocity [m/s],time [s],%s\n'
+                % ','.join(COLUMNS))
         for r in runs:
             for k, t in enumerate(r.t):
                 f.write('%s,%s,%d,%g,%.6g,%s\n' % (r.label, r.vessel, r.n, r.u, t, ','.join(
-                    '%.6g' % r.series[name][k] for name in (
-                        'M_papers left-right', 'M_lacey left-right', 'M_papers lower-upper',
-                        'M_lacey lower-upper'))))
+                    '%.6g' % r.series[name][k] for name in COLUMNS)))
+    with open('mixingCellSize.csv', 'w') as f:
+        f.write('run,vessel,particles,superficial velocity [m/s],cell dx [mm],cell dz [mm],'
+                'sampling cells,particles per cell,M_final papers (cells),'
+                'M_final particles,random-mixing M_papers,random-mixing M_particles\n')
+        for r in runs:
+            for z in r.sizes:
+                f.write('%s,%s,%d,%g,%g,%g,%g,%g,%g,%g,%g,%g\n' % (
+                    r.label, r.vessel, r.n, r.u, z['dx_mm'], z['dz_mm'], z['sampling_cells'],
+                    z['particles_per_cell'], z['M_papers'], z['M_particles'],
+                    z['random_mixing_M_papers'], z['random_mixing_M_particles']))
     for vessel, n in sorted({(r.vessel, r.n) for r in runs}):
-        bed = [r for r in runs if (r.vessel, r.n) == (vessel, n)]
+        bed = sorted([r for r in runs if (r.vessel, r.n) == (vessel, n)], key=lambda r: r.u)
+        what = 'no draft plates' if vessel == 'no-plates' else 'draft plates'
         curves = []
-        for r in sorted(bed, key=lambda r: r.u):
+        for k, r in enumerate(bed):
             data = os.path.join(r.work, 'postProcessing', 'mixing.csv')
-            curves += ['"%s" skip 1 using 1:2 with linespoints title "%g m/s, papers"'
-                       % (data, r.u),
-                       '"%s" skip 1 using 1:3 with lines dt 2 title "%g m/s, Lacey"'
-                       % (data, r.u)]
-        sc.plot('mixing_%s_n%d.png' % (vessel.replace('-', ''), n),
+            curves += ['"%s" skip 1 using 1:%d with linespoints lc %d title "%g m/s, papers '
+                       '(cells)"' % (data, 2 + COLUMNS.index('M_papers left-right'), k + 1, r.u),
+                       '"%s" skip 1 using 1:%d with lines dt 2 lc %d title "%g m/s, by '
+                       'particles"' % (data, 2 + COLUMNS.index('M_particles left-right'),
+                                       k + 1, r.u)]
+        tag = '%s_n%d' % (vessel.replace('-', ''), n)
+        sc.plot('mixing_%s.png' % tag,
                 'set datafile separator ","\nset grid\nset key top left\n'
-                'set title "Degree of mixing, %s, %d particles (left-right halves)"\n'
+                'set title "Degree of mixing, %s, %d particles (left-right halves, 55 x 57 mm)"\n'
                 'set xlabel "time [s]"\nset ylabel "M"\nset yrange [-0.1:1.1]\nplot %s\n'
-                % ('no draft plates' if vessel == 'no-plates' else 'draft plates', n,
-                   ', \\\n     '.join(curves)))
+                % (what, n, ', \\\n     '.join(curves)))
+        # M_final against the cell size (the square root of its area)
+        curves = []
+        for k, r in enumerate(bed):
+            sel = '(strcol(1) eq "%s" ? sqrt($5*$6) : 1/0)' % r.label
+            curves += ['"mixingCellSize.csv" skip 1 using %s:9 with linespoints pt 7 lc %d '
+                       'title "%g m/s, papers (cells)"' % (sel, k + 1, r.u),
+                       '"mixingCellSize.csv" skip 1 using %s:10 with linespoints dt 2 pt 6 '
+                       'lc %d title "%g m/s, by particles"' % (sel, k + 1, r.u)]
+        sel = '(strcol(1) eq "%s" ? sqrt($5*$6) : 1/0)' % bed[0].label
+        curves += ['"mixingCellSize.csv" skip 1 using %s:11 with lines lc rgb "gray" lw 2 '
+                   'title "random mixing, cells"' % sel,
+                   '"mixingCellSize.csv" skip 1 using %s:12 with lines dt 2 lc rgb "gray" lw 2 '
+                   'title "random mixing, particles"' % sel]
+        sc.plot('mixing_cellsize_%s.png' % tag,
+                'set datafile separator ","\nset grid\nset key bottom right\n'
+                'set title "M_{final} against the sampling cell, %s, %d particles"\n'
+                'set xlabel "sampling cell size sqrt(dx dz) [mm] (11 x 19 mm: the papers\' '
+                'grid)"\nset ylabel "M_{final} (left-right)"\nset yrange [-0.1:1.1]\n'
+                'plot %s\n' % (what, n, ', \\\n     '.join(curves)))
 
 
 def set_write_interval(path, dt):

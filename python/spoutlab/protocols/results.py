@@ -526,43 +526,142 @@ def mixing_paper(vessel, n, u):
 
 
 def mixing_section(case):
-    """The degree of mixing (protocols/mixing's mixing.txt): a row and a
-    results.csv key per run, M against time per bed, snapshots of the
-    papers' points.  Runs longer or shorter than the protocol's default
-    (--time) get keys ending in _t<time>, and the figures of a case copy
-    that holds only such runs end so too, so that a longer run can stand
-    beside the default ones."""
+    """The degree of mixing (protocols/mixing's mixing.json): rows and
+    results.csv keys per run at the 55 x 57 mm cells and the papers' 11 x 19
+    mm grid, each with both weightings (cells: the papers' eq 18, the
+    headline key; particles: the key ending in _particles), M against time
+    and M_final against the cell size per bed, snapshots of the papers'
+    points, and the circulation rate the papers' M after 2 s would need.
+    Runs longer or shorter than the protocol's default (--time) get keys
+    ending in _t<time> (before the weighting and grid suffixes), and the
+    figures of a case copy that holds only such runs end so too, so that a
+    longer run can stand beside the default ones."""
     numbers = read_json(case, 'mixing.json', 'protocols/mixing')
     settings = numbers['settings']
+    level = numbers.get('level', 0.9)
     rows, keys, figures = [], [], []
     times = set()
     for r in numbers['runs']:
         label, vessel = r['label'], r['vessel']
         n, u, t_run = r['particles'], r['u_m_s'], '%.3g' % r['time_s']
-        M = tuple('%.3f' % r[k] for k in ('M_papers_left_right', 'M_lacey_left_right',
-                                           'M_papers_lower_upper', 'M_lacey_lower_upper'))
+        M = {k: '%.3f' % r[k] for k in r if k.startswith('M_') and '_at_' not in k}
+        grid = [z for z in r['cell_sizes'] if (z['dx_mm'], z['dz_mm']) == (11, 19)][0]
         times.add(float(t_run))
         tag = '' if float(t_run) == mixing_protocol.DEFAULT_TIME else '_t%g' % float(t_run)
         paper = mixing_paper(vessel, n, u)
-        hours = wall_time(os.path.join(case, 'runs', label)) / 3600
-        rows.append(('M_final, %s, %d particles, u_s = %.1f m/s' % (
-            'no draft plates' if vessel == 'no-plates' else 'draft plates', n, u),
-            '%s (Lacey %s; lower-upper %s, Lacey %s)' % M, paper,
-            '%s; %s s' % (settings, t_run), '%.2f h' % hours))
+        paper_value = paper.split(' ')[0] if paper[:1].isdigit() else ''
+        hours = '%.2f h' % (wall_time(os.path.join(case, 'runs', label)) / 3600)
+        what = '%s, %d particles, u_s = %.1f m/s' % (
+            'no draft plates' if vessel == 'no-plates' else 'draft plates', n, u)
+        run_settings = '%s; %s s; W_s %.3f kg/s, turnover m_bed/W_s %.2f s' % (
+            settings, t_run, r['W_s_kg_s'], r['turnover_s'])
+        rows.append(('M_final, %s, 55 x 57 mm cells' % what,
+                     '%s (by particles %s; Lacey %s, by particles %s; lower-upper %s, by '
+                     'particles %s)' % (M['M_papers_left_right'], M['M_particles_left_right'],
+                                        M['M_lacey_left_right'],
+                                        M['M_lacey_particles_left_right'],
+                                        M['M_papers_lower_upper'],
+                                        M['M_particles_lower_upper']),
+                     paper, run_settings, hours))
+        rows.append(('M_final, %s, the papers\' 11 x 19 mm cells' % what,
+                     '%.3f (by particles %.3f; random mixing about %.3f, by particles %.3f; '
+                     '%.0f cells of %.1f particles)' % (
+                         grid['M_papers'], grid['M_particles'], grid['random_mixing_M_papers'],
+                         grid['random_mixing_M_particles'], grid['sampling_cells'],
+                         grid['particles_per_cell']),
+                     paper, run_settings, hours))
         bed = 'mixing%dk' % round(n / 1000) if vessel == 'no-plates' \
             else 'mixingDraft%dk' % round(n / 1000)
         key = ('%s.M_final' % bed if (vessel, n, u) == ('no-plates', 10000, 2.0)
                else '%s.M_final_u%.1f' % (bed, u)) + tag
-        keys.append((key, M[0], '', paper.split(' ')[0] if paper[:1].isdigit() else '',
-                     'papers\' M, left-right halves; %s; %s s at %.1f m/s; Lacey %s' % (
-                         settings, t_run, u, M[1])))
+        common = 'papers\' M, left-right halves; %s s at %.1f m/s' % (t_run, u)
+        keys += [
+            (key, M['M_papers_left_right'], '', paper_value,
+             'weighting cells (eq 18: the sum over the sampling cells, N = their number); '
+             'sampling cells 55 x 57 mm; %s; Lacey %s; weighted by particles: %s_particles'
+             % (common, M['M_lacey_left_right'], key)),
+            (key + '_particles', M['M_particles_left_right'], '', '',
+             'weighting particles (each cell by its particles, the headline before issue '
+             '25; the paper value is on the cells key); sampling cells 55 x 57 mm; %s; '
+             'Lacey %s' % (common, M['M_lacey_particles_left_right'])),
+            (key + '_grid11x19', '%.3f' % grid['M_papers'], '', paper_value,
+             'weighting cells (eq 18); sampling cells 11 x 19 mm, the papers\' grid '
+             '(%.1f particles a cell; random mixing gives about %.3f); %s'
+             % (grid['particles_per_cell'], grid['random_mixing_M_papers'], common)),
+            (key + '_grid11x19_particles', '%.3f' % grid['M_particles'], '', '',
+             'weighting particles; sampling cells 11 x 19 mm (random mixing gives %.3f); %s'
+             % (grid['random_mixing_M_particles'], common))]
         if (vessel, n, u) in KEY_MIXING_POINTS:
             # the labels at the end of the run (Figs 8-9 by colour)
             last = [f for f in r['snapshots'] if f.endswith('_label.png')][-1:]
             figures += [(f, 'mixing_' + f) for f in last]
-    beds = sorted({f for f in os.listdir(case) if re.match(r'mixing_\w+_n\d+\.png$', f)})
+    r, k = mixing_circulation(numbers['runs'], level)
+    rows, keys = rows + r, keys + k
+    beds = sorted({f for f in os.listdir(case)
+                   if re.match(r'mixing_(cellsize_)?\w+_n\d+\.png$', f)})
     tag = '_t%g' % min(times) if times and mixing_protocol.DEFAULT_TIME not in times else ''
     return rows, keys, [(f, f[:-4] + tag + '.png') for f in beds] + figures
+
+
+def mixing_circulation(runs, level):
+    """The circulation rate the papers' M = level after 2 s of the 10 000-
+    particle bed would need.  The papers' scale has random mixing at 1, ours
+    (55 x 57 mm cells) at M_random < 1, so their level is level M_random
+    here.  If M depends on time only through the number of turnovers
+    t W_s/m_bed, a run that first reaches it at t_reach with W_s needs
+    W_s t_reach/(2 s) to reach it at 2 s.  From the longest run of that bed
+    that reaches it (cells weighting; the particle weighting beside it); M
+    at one turnover in every run of the bed shows whether M follows the
+    turnovers."""
+    bed = [r for r in runs if r['vessel'] == 'no-plates' and r['particles'] == 10000]
+    if not bed:
+        return [], []
+    rows, keys = [], []
+    def at(r, name):
+        return '-' if r.get(name) is None else '%.3f' % r[name]
+
+    spread = '; '.join('%g m/s, %.3g s: W_s %.3f kg/s, turnover %.2f s, M_papers at half a '
+                       'turnover %s, at one %s' % (
+                           r['u_m_s'], r['time_s'], r['W_s_kg_s'], r['turnover_s'],
+                           at(r, 'M_papers_at_half_turnover'), at(r, 'M_papers_at_turnover'))
+                       for r in bed)
+    title = 'W_s the papers\' M = %g after 2 s would need (10 000 particles)' % level
+    paper = 'M 0.9-1 after 2 s (Fig 10b)'
+    reached = [r for r in bed if r.get('t_reach_cells_s') is not None]
+    if not reached:
+        best = max(bed, key=lambda r: r['M_papers_left_right'] / r['level_cells'])
+        rows.append((title, 'not reached within %.3g s: M_papers (55 x 57 mm) at most %.3f '
+                     'against the %.3f (%g of random mixing) sought (%g m/s)'
+                     % (max(r['time_s'] for r in bed), best['M_papers_left_right'],
+                        best['level_cells'], level, best['u_m_s']), paper, spread, ''))
+        return rows, keys
+    r = max(reached, key=lambda r: r['time_s'])
+    t_reach, w_s = r['t_reach_cells_s'], r['W_s_kg_s']
+    need = w_s * t_reach / 2.0
+    by_particles = r.get('t_reach_particles_s')
+    rows.append((title, '%.2f kg/s, %.1f times the %.3f kg/s measured (turnover %.2f s instead '
+                 'of %.2f s): M_papers (55 x 57 mm) first reaches %.3f, %g of its random-mixing '
+                 'value, at %.2f s = %.2f turnovers%s' % (
+                     need, need / w_s, w_s, 2.0 * r['turnover_s'] / t_reach, r['turnover_s'],
+                     r['level_cells'], level, t_reach, t_reach / r['turnover_s'],
+                     '' if by_particles is None else '; weighted by particles (%.3f) at %.2f s, '
+                     'needing %.2f kg/s' % (r['level_particles'], by_particles,
+                                            w_s * by_particles / 2.0)),
+                 paper, 'from %s (%g m/s, %.3g s): M taken as a function of the turnovers '
+                 't W_s/m_bed, so W_needed = W_s t_reach/(2 s); %s' % (
+                     r['label'], r['u_m_s'], r['time_s'], spread), ''))
+    keys.append(('mixing10k.Ws_needed_kg_s', '%.3g' % need, 'kg/s', '',
+                 'weighting cells (M_papers, 55 x 57 mm cells): the W_s that would bring M to '
+                 '%g of random mixing (%.3f) after 2 s if M follows the turnovers t W_s/m_bed: '
+                 'W_s %.3f kg/s measured at %g m/s times t_reach %.2f s / 2 s (%s, %.3g s); '
+                 'turnover %.2f s' % (level, r['level_cells'], w_s, r['u_m_s'], t_reach,
+                                      r['label'], r['time_s'], r['turnover_s'])))
+    if by_particles is not None:
+        keys.append(('mixing10k.Ws_needed_kg_s_particles', '%.3g' % (w_s * by_particles / 2.0),
+                     'kg/s', '', 'weighting particles (M_particles, 55 x 57 mm cells): as '
+                     'mixing10k.Ws_needed_kg_s with t_reach %.2f s (level %.3f)'
+                     % (by_particles, r['level_particles'])))
+    return rows, keys
 
 
 # the runs whose label snapshots go into docs/figures
