@@ -90,38 +90,35 @@ for f, (centre, area) in enumerate(geometry_of):
 
 gas = json.load(open(os.path.join(case, 'circulation.json')))['gas']
 failures = 0
+
+
+def compare(name, key, here, there, rel_shown=True):
+    """One value rebuilt here against the file's, within TOL."""
+    global failures
+    rel = abs(there / here - 1)
+    ok = rel <= TOL
+    failures += not ok
+    print('%-18s %-4s fields %.10g, circulation.json %.10g%s: %s'
+          % (name, key, here, there, ' (rel %.1e)' % rel if rel_shown else '',
+             'PASS' if ok else 'FAIL'))
+
+
+def compare_carried(name, flow, flowT, flowY):
+    """The T (and H2O where the run dries) a flow carries."""
+    for key, here in (('T', flowT / flow), ('H2O', flowY / flow))[:2 if os.path.exists(vapour) else 1]:
+        compare(name, key, here, gas['carried'][name][key])
+
+
 names = (('outOfJet', 'intoJet'), ('outOfFountainCore', 'intoFountainCore'))
 for core in range(2):
     for way in range(2):
-        name = names[core][way]
-        flow, flowT, flowY = sums[core, way]
-        for key, here in (('T', flowT / flow), ('H2O', flowY / flow))[:2 if os.path.exists(vapour) else 1]:
-            there = gas['carried'][name][key]
-            rel = abs(there / here - 1)
-            ok = rel <= TOL
-            failures += not ok
-            print('%-18s %-4s fields %.10g, circulation.json %.10g (rel %.1e): %s'
-                  % (name, key, here, there, rel, 'PASS' if ok else 'FAIL'))
+        compare_carried(names[core][way], *sums[core, way])
     # the mass flows themselves, as the ratio out / in (rho and the inlet's
     # flow, by which the file divides them, cancel)
-    here = sums[core, 0, 0] / sums[core, 1, 0]
-    there = gas[names[core][0]] / gas[names[core][1]]
-    ok = abs(there / here - 1) <= TOL
-    failures += not ok
-    print('%-18s %-4s fields %.10g, circulation.json %.10g: %s'
-          % (names[core][0], '/in', here, there, 'PASS' if ok else 'FAIL'))
+    compare(names[core][0], '/in', sums[core, 0, 0] / sums[core, 1, 0],
+            gas[names[core][0]] / gas[names[core][1]], rel_shown=False)
 for k, name in enumerate(('spoutGap', 'downcomers')):
-    flow, flowT, flowY = planes[k]
-    for key, here in (('T', flowT / flow), ('H2O', flowY / flow))[:2 if os.path.exists(vapour) else 1]:
-        there = gas['carried'][name][key]
-        rel = abs(there / here - 1)
-        ok = rel <= TOL
-        failures += not ok
-        print('%-18s %-4s fields %.10g, circulation.json %.10g (rel %.1e): %s'
-              % (name, key, here, there, rel, 'PASS' if ok else 'FAIL'))
-here, there = planes[0, 0] / planes[1, 0], gas['spoutShare'] / gas['downcomerShare']
-ok = abs(there / here - 1) <= TOL
-failures += not ok
-print('%-18s %-4s fields %.10g, circulation.json %.10g: %s'
-      % ('spout/downcomers', '', here, there, 'PASS' if ok else 'FAIL'))
+    compare_carried(name, *planes[k])
+compare('spout/downcomers', '', planes[0, 0] / planes[1, 0],
+        gas['spoutShare'] / gas['downcomerShare'], rel_shown=False)
 sys.exit('check_carried: %d values differ' % failures if failures else 0)
