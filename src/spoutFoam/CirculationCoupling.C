@@ -212,28 +212,34 @@ CirculationCoupling::CirculationCoupling
 
 void CirculationCoupling::findGasFaces()
 {
-    // the horizontal internal faces of the plane nearest to mid-plate height
-    // from below (on a grid whose faces fall on He and Hd, mid-plate height
-    // can lie half-way between two planes): the same plane on every rank
+    // the horizontal internal faces of the plane nearest to a height from
+    // below (on a grid whose faces fall on He and Hd, mid-plate height can
+    // lie half-way between two planes): the same plane on every rank
     const DraftPlateRegions& r = stats_.regions();
-    const double zMid = 0.5*(r.He() + r.Hd());
     const Foam::vectorField& Cf = mesh_.faceCentres();
     const Foam::vectorField& Sf = mesh_.faceAreas();
     const auto horizontal = [&](Foam::label f)
     {
         return std::fabs(Sf[f].z()) >= 0.99*Foam::mag(Sf[f]);
     };
-    double plane = -Foam::GREAT;
+    const auto planeBelow = [&](double z)
+    {
+        double plane = -Foam::GREAT;
+        for (Foam::label f = 0; f < mesh_.nInternalFaces(); ++f)
+        {
+            if (horizontal(f) && Cf[f].z() <= z + 1e-9) plane = std::max(plane, Cf[f].z());
+        }
+        MPI_Allreduce(MPI_IN_PLACE, &plane, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+        return plane;
+    };
+    gasHeight_ = planeBelow(0.5*(r.He() + r.Hd()));
+    const double jetTop = planeBelow(r.He());
     for (Foam::label f = 0; f < mesh_.nInternalFaces(); ++f)
     {
-        if (horizontal(f) && Cf[f].z() <= zMid + 1e-9) plane = std::max(plane, Cf[f].z());
-    }
-    MPI_Allreduce(MPI_IN_PLACE, &plane, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
-    gasHeight_ = plane;
-    for (Foam::label f = 0; f < mesh_.nInternalFaces(); ++f)
-    {
-        if (!horizontal(f) || std::fabs(Cf[f].z() - plane) > 1e-9) continue;
+        if (!horizontal(f)) continue;
         const double ax = std::fabs(Cf[f].x());
+        if (std::fabs(Cf[f].z() - jetTop) <= 1e-9 && ax < 0.5*r.Wd()) jetTopFaces_.push_back(f);
+        if (std::fabs(Cf[f].z() - gasHeight_) > 1e-9) continue;
         if (ax < 0.5*r.Wd()) spoutFaces_.push_back(f);
         else if (ax > 0.5*r.Wd() + r.plateThickness()) downcomerFaces_.push_back(f);
     }
@@ -289,14 +295,15 @@ void CirculationCoupling::sampleGas(const ThermalCoupling* thermal)
     const Foam::vectorField& Sf = mesh_.faceAreas();
     // and, with the heat coupling, the T and H2O they carry from their
     // upwind cells (the mixed-cup gas through the spout gap and the
-    // downcomers, beside what the kernels there see)
+    // downcomers, beside what the kernels there see), and the same of the
+    // gas leaving the jet through its top
     const Foam::volScalarField* T = thermal ? &thermal->T() : nullptr;
     const Foam::volScalarField* Y = thermal ? thermal->Y() : nullptr;
     const Foam::labelList& owner = mesh_.faceOwner();
     const Foam::labelList& neighbour = mesh_.faceNeighbour();
-    double up[2] = {0, 0};
-    const std::vector<Foam::label>* planes[2] = {&spoutFaces_, &downcomerFaces_};
-    for (int k = 0; k < 2; ++k)
+    double up[3] = {0, 0, 0};
+    const std::vector<Foam::label>* planes[3] = {&spoutFaces_, &downcomerFaces_, &jetTopFaces_};
+    for (int k = 0; k < 3; ++k)
     {
         for (const Foam::label f : *planes[k])
         {
@@ -307,6 +314,7 @@ void CirculationCoupling::sampleGas(const ThermalCoupling* thermal)
             if (Y) gas_[16 + 2*k] += rho_*flux*(*Y)[from];
         }
     }
+    gas_[21] += rho_*up[2];
     const Foam::label inlet = mesh_.boundaryMesh().findPatchID("inlet");
     double in = 0;
     if (inlet >= 0) in = -Foam::sum(phi_.boundaryField()[inlet]);
@@ -645,13 +653,15 @@ std::string CirculationCoupling::carriedJson() const
 {
     // the flow-weighted T [K] and H2O mass fraction of the gas each of the
     // four side flows carries, and of the net upward flows through the
-    // spout gap and the downcomers; nothing without the heat coupling
-    static const char* const names[6] =
-        {"outOfJet", "intoJet", "outOfFountainCore", "intoFountainCore", "spoutGap", "downcomers"};
+    // spout gap and the downcomers and out of the jet's top (the plane of
+    // faces nearest to He from below, |x| < Wd/2); nothing without the heat
+    // coupling
+    static const char* const names[7] = {"outOfJet", "intoJet", "outOfFountainCore",
+        "intoFountainCore", "spoutGap", "downcomers", "jetTop"};
     std::string j;
-    for (int k = 0; k < 6; ++k)
+    for (int k = 0; k < 7; ++k)
     {
-        const double m = k < 4 ? gas_[3 + k] : gas_[k - 3];
+        const double m = k < 4 ? gas_[3 + k] : k < 6 ? gas_[k - 3] : gas_[21];
         const double mT = gas_[7 + 2*k], mY = gas_[8 + 2*k];
         if (!(m > 0 && mT > 0)) continue;
         j += std::string(j.empty() ? "" : ", ") + "\"" + names[k] + "\": {\"T\": "

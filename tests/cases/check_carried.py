@@ -10,7 +10,8 @@ constant/spoutedBed [mm]; each face's flux phi leaves the core where the
 normal points away from the axis; the gas it carries is its upwind cell's: T
 and H2O (where the run dries) of the cell it comes from.  The same of the
 net upward flows through the spout gap and the downcomers, on the plane of
-horizontal faces nearest to mid-plate height (He + Hd)/2 from below.  Read from the ASCII polyMesh and fields
+horizontal faces nearest to mid-plate height (He + Hd)/2 from below, and out
+of the jet's top (the plane nearest to He from below, |x| < Wd/2).  Read from the ASCII polyMesh and fields
 with nothing of spoutFoam's own, so a wrong upwind cell, a wrong sign or a
 face counted twice shows as a difference beyond the ten digits the file
 keeps.
@@ -59,20 +60,35 @@ half, He, Hd = (0.5e-3 * foamfile.scalar(geometry, 'Wd'), 1e-3 * foamfile.scalar
 plate = 1e-3 * foamfile.scalar(geometry, 'plateThickness')
 # sums[core][way] = [flow, flow T, flow H2O]; way 0 out of the core, 1 into it
 sums = np.zeros((2, 2, 3))
-# planes[k] = the same of the net upward flow through the spout gap (k 0)
-# and the downcomers (1), on the plane of horizontal faces nearest to
-# mid-plate height from below
-planes = np.zeros((2, 3))
 geometry_of = []
 for f in range(len(neighbour)):
     p = points[faces[f]]
     geometry_of.append((p.mean(axis=0), 0.5 * np.cross(p[2] - p[0], p[3] - p[1])))  # a quad's area
-mid = 0.5 * (He + Hd)
-plane = max(c[2] for c, a in geometry_of
-            if abs(a[2]) >= 0.99 * np.linalg.norm(a) and c[2] <= mid + 1e-9)
+# planes[k] = the same of the net upward flow through the spout gap (k 0)
+# and the downcomers (1), on the plane of horizontal faces nearest to
+# mid-plate height from below, and (2) out of the jet's top, the plane
+# nearest to He from below, |x| < Wd/2
+planes = np.zeros((3, 3))
+
+
+def horizontal(area):
+    return abs(area[2]) >= 0.99 * np.linalg.norm(area)
+
+
+def plane_below(z):
+    return max(c[2] for c, a in geometry_of if horizontal(a) and c[2] <= z + 1e-9)
+
+
+mid, top = plane_below(0.5 * (He + Hd)), plane_below(He)
 for f, (centre, area) in enumerate(geometry_of):
-    if abs(area[2]) >= 0.99 * np.linalg.norm(area) and abs(centre[2] - plane) <= 1e-9:
-        k = 0 if abs(centre[0]) < half else 1 if abs(centre[0]) > half + plate else -1
+    if not horizontal(area):
+        continue
+    ks = []
+    if abs(centre[2] - mid) <= 1e-9:
+        ks.append(0 if abs(centre[0]) < half else 1 if abs(centre[0]) > half + plate else -1)
+    if abs(centre[2] - top) <= 1e-9 and abs(centre[0]) < half:
+        ks.append(2)
+    for k in ks:
         if k >= 0:
             upwind = owner[f] if phi[f] > 0 else neighbour[f]
             planes[k] += phi[f] * np.sign(area[2]) * np.array([1, T[upwind], Y[upwind]])
@@ -117,7 +133,7 @@ for core in range(2):
     # flow, by which the file divides them, cancel)
     compare(names[core][0], '/in', sums[core, 0, 0] / sums[core, 1, 0],
             gas[names[core][0]] / gas[names[core][1]], rel_shown=False)
-for k, name in enumerate(('spoutGap', 'downcomers')):
+for k, name in enumerate(('spoutGap', 'downcomers', 'jetTop')):
     compare_carried(name, *planes[k])
 compare('spout/downcomers', '', planes[0, 0] / planes[1, 0],
         gas['spoutShare'] / gas['downcomerShare'], rel_shown=False)

@@ -420,11 +420,17 @@ def consistency(o):
         # the gas through the spout gap and the downcomers at mid-plate height
         # as it flows (mixed cup) against what the kernels there saw
         r['mixed_cup_C'] = {k: carried[name]['T'] - 273.15
-                            for k, name in (('spout', 'spoutGap'), ('downcomer', 'downcomers'))}
+                            for k, name in (('spout', 'spoutGap'), ('downcomer', 'downcomers'),
+                                            ('jet', 'jetTop')) if name in carried}
         lines.append('  the gas through the spout gap and the downcomers at mid-plate height, '
                      'flow-weighted: %.1f and %.1f C (their kernels saw %.1f and %.1f C)'
                      % (r['mixed_cup_C']['spout'], r['mixed_cup_C']['downcomer'],
                         r['regions']['spout']['Tgas_C'][1], r['regions']['downcomer']['Tgas_C'][1]))
+        if 'jet' in r['mixed_cup_C']:
+            lines.append("  the gas leaving the jet through its top, flow-weighted: %.1f C (its "
+                         "kernels saw %.1f C; the predictor's jet gas %.1f C as they see it)"
+                         % (r['mixed_cup_C']['jet'], r['regions']['jet']['Tgas_C'][1],
+                            r['regions']['jet']['Tgas_C'][0]))
     if g.dryingModel == 'freeWater':
         d = g.particles['dp'] / 1000
         r['rate_region_means'] = region_mean_rate(

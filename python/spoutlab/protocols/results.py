@@ -975,12 +975,16 @@ def drytime_section(case):
                          + '; unlimited air %.2f x the direct rate'
                          % (c['rate_unlimited_air'] / c['rate_direct']), '', settings, wall))
         if 'mixed_cup_C' in c:
-            rows.append(('gas through the spout gap and the downcomers at mid-plate height, '
-                         'flow-weighted (mixed cup), against what their kernels saw (CFD-DEM)',
+            rows.append(('gas through the spout gap and the downcomers at mid-plate height (and '
+                         "out of the jet's top), flow-weighted (mixed cup), against what their "
+                         'kernels saw (CFD-DEM)',
                          'spout %.1f / %.1f C, downcomers %.1f / %.1f C'
                          % (c['mixed_cup_C']['spout'], c['regions']['spout']['Tgas_C'][1],
                             c['mixed_cup_C']['downcomer'],
-                            c['regions']['downcomer']['Tgas_C'][1]), '', settings, wall))
+                            c['regions']['downcomer']['Tgas_C'][1])
+                         + ('; out of the jet\'s top %.1f / %.1f C' % (
+                             c['mixed_cup_C']['jet'], c['regions']['jet']['Tgas_C'][1])
+                            if 'jet' in c['mixed_cup_C'] else ''), '', settings, wall))
         if 'rate_region_means' in c:
             rows.append(("free-water rate from the CFD-DEM's region means (holdup, k_m, gas and "
                          'kernel state), against the direct rate',
