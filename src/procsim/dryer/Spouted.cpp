@@ -80,6 +80,11 @@ std::size_t regionNamed(const Case& c, const std::string& name)
 
 } // namespace
 
+double meanBeside(double regionMean, double coreMean, double share)
+{
+    return (regionMean - share * coreMean) / (1 - share);
+}
+
 void addCore(Case& c, const std::string& region, const std::string& name, double share, Region core)
 {
     const std::size_t k = regionNamed(c, region);
@@ -92,7 +97,7 @@ void addCore(Case& c, const std::string& region, const std::string& name, double
     core.holdupShare = rest.holdupShare * share;
     core.measured = rest.measured;
     const auto beside = [share](double regionMean, double coreMean) {
-        return (regionMean - share * coreMean) / (1 - share);
+        return meanBeside(regionMean, coreMean, share);
     };
     rest.slipReynolds = beside(rest.slipReynolds, core.slipReynolds);
     rest.voidage = beside(rest.voidage, core.voidage);

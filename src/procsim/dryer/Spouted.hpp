@@ -194,6 +194,9 @@ struct Case
     TimeStepControl step;
 };
 
+// The mean over the rest of a region beside its core, from the region's
+// mean and the core's, the core holding `share` of the region's kernel time.
+double meanBeside(double regionMean, double coreMean, double share);
 // A region as two gas compartments, its core and the rest beside it: the
 // jet under the spout (region "entrainment", core "jet"), which all the gas
 // crosses first, or the fountain's core over the spout (region "fountain",

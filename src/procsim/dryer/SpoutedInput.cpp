@@ -175,7 +175,7 @@ void readCore(const YamlInput& cond, const YamlInput& gas, Case& c, const std::s
     if (gas.has(outOf)) core.outOfCore = gas.within(outOf, 0, 10);
     const double regionT = zone.within("Tgas", 0, 2000, "K");
     core.exchangeShare = carriedShare(gas, into, outOf, core.gasTemperatureFile,
-                                      (regionT - share * core.gasTemperatureFile) / (1 - share));
+                                      meanBeside(regionT, core.gasTemperatureFile, share));
     addCore(c, region, name, share, core);
     const Region& rest = c.regions[static_cast<std::size_t>(c.regions.back().partOf)];
     const std::pair<const char*, double> beside[] = {
