@@ -885,11 +885,11 @@ def drytime_study(study):
                 % (n, study[0].get('Hd', float('nan')), ums,
                    study[0].get('drying_model', 'kernelDiffusion')))
     for k in sorted({q['u_over_ums'] for q in study}):
-        q = [q for q in study if q['u_over_ums'] == k][0]
-        if 'cycle_s' in q:
+        first = next(q for q in study if q['u_over_ums'] == k)   # the velocity's statistics
+        if 'cycle_s' in first:
             rows.append(('design study: the circulation statistics at %g u_ms (%g m/s)'
-                         % (k, q['u_s']), 'mean cycle %.3g s' % q['cycle_s'], '', settings,
-                         '%.2f h' % (q['statistics_wall_s'] / 3600)))
+                         % (k, first['u_s']), 'mean cycle %.3g s' % first['cycle_s'], '',
+                         settings, '%.2f h' % (first['statistics_wall_s'] / 3600)))
     for q in study:
         point = 'drytime.%gC_%gums%s' % (q['T_in_C'], q['u_over_ums'], suffix)
         where = '%g C, %g u_ms (%g m/s); ' % (q['T_in_C'], q['u_over_ums'], q['u_s'])
