@@ -22,6 +22,11 @@ bool DryingModel::needsGas(const double*) const
     return true;
 }
 
+double DryingModel::release(double, double&, double*, double&) const
+{
+    throw std::logic_error("dryingModel " + name() + ": every step needs the gas (no release without it)");
+}
+
 int DryingModel::stateSize() const
 {
     return 0;

@@ -82,6 +82,13 @@ public:
     // finite air and k_m = 0: the same water, state and latent heat.
     virtual bool needsGas(const double* state) const;
 
+    // The step of a state whose advance needs no gas (needsGas() false),
+    // taken without it: X and the state move, the latent heat is set, and
+    // the water released [kg] returned, all as advanceWithLatentHeat() with
+    // any gas would give them for a kernel of dry mass m_d. A model whose
+    // every step needs the gas has none (logic_error).
+    virtual double release(double dryMass, double& moisture, double* state, double& latentHeat) const;
+
     // Heat the kernel gives up per kg of water evaporated [J/kg]: the grain's
     // heat of vaporisation at the moisture where the water leaves
     // (SorptionIsotherm::latentHeat), free water's for freeWater.

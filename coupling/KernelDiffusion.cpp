@@ -329,16 +329,23 @@ double KernelDiffusion::advanceWithLatentHeat(const Kernel& kernel, double& mois
         return step(kernel, moisture, state, air, massTransferCoefficient, dt, &latentHeat);
     checkStep(moisture, massTransferCoefficient, dt);
     // state: the calls left in the block, its latent heat, then the kernel
-    double& left = state[0];
-    if (left == 0.0)
+    if (state[0] == 0.0)
     {
         // a block starts: the kernel over kernelSteps steps of this dt, its
         // water then released in equal shares (the last lands X on a_0)
         double x = moisture;
         step(kernel, x, state + 2, air, massTransferCoefficient, kernelSteps_ * dt, &state[1]);
-        left = kernelSteps_;
+        state[0] = kernelSteps_;
+        return nextShare(kernel.dryMass, moisture, state, latentHeat);
     }
-    else if (!(left >= 1.0 && left < kernelSteps_ && left == std::floor(left)))
+    return release(kernel.dryMass, moisture, state, latentHeat);
+}
+
+double KernelDiffusion::release(double dryMass, double& moisture, double* state, double& latentHeat) const
+{
+    if (kernelSteps_ == 1) return DryingModel::release(dryMass, moisture, state, latentHeat);
+    const double left = state[0];
+    if (!(left >= 1.0 && left < kernelSteps_ && left == std::floor(left)))
     {
         throw std::domain_error("dryingModel kernelDiffusion: expected a particle state whose first value "
                                 "is the calls left in a block of kernelSteps "
@@ -346,11 +353,18 @@ double KernelDiffusion::advanceWithLatentHeat(const Kernel& kernel, double& mois
                                 + " (a state of another layout, such as a restart written before "
                                   "the block's values came first)");
     }
+    return nextShare(dryMass, moisture, state, latentHeat);
+}
+
+// The block's next equal share of its water (the last lands X on a_0).
+double KernelDiffusion::nextShare(double dryMass, double& moisture, double* state, double& latentHeat) const
+{
+    double& left = state[0];
     latentHeat = state[1];
     const double old = moisture;
     moisture = left == 1.0 ? state[2] : moisture - (moisture - state[2]) / left;
     left -= 1.0;
-    return kernel.dryMass * (old - moisture);
+    return dryMass * (old - moisture);
 }
 
 double KernelDiffusion::step(const Kernel& kernel, double& moisture, double* state, const MoistAir& air,

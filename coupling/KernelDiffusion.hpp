@@ -88,6 +88,8 @@ public:
     double latentHeat(const Kernel& kernel, double moisture, const double* state) const override;
     // false inside a kernelSteps block (its kernel already advanced)
     bool needsGas(const double* state) const override { return kernelSteps_ == 1 || state[0] == 0.0; }
+    // a step inside a block: the next of its equal shares of water
+    double release(double dryMass, double& moisture, double* state, double& latentHeat) const override;
     std::string name() const override { return "kernelDiffusion"; }
     // The mean moisture a_0 held in a state (X at the end of a block).
     double meanMoisture(const double* state) const { return state[offset_]; }
@@ -119,6 +121,8 @@ private:
     double subStep(const Surface& s, double* amplitude, double dTau, const double* decay, double surfaceGuess,
                    SorptionIsotherm::Activity atGuess) const;
     void modes(int n);
+    // release() without its check of the block's count (also at a block's start)
+    double nextShare(double dryMass, double& moisture, double* state, double& latentHeat) const;
     // advance(), and with latentHeat non-null the latent heat before it
     double step(const Kernel& kernel, double& moisture, double* state, const MoistAir& air,
                 double massTransferCoefficient, double dt, double* latentHeat) const;

@@ -21,6 +21,22 @@ void MoistureExchange::initialise(KernelMoisture& kernels, std::size_t i) const
                        kernels.stateOf(i, static_cast<std::size_t>(model_->stateSize())));
 }
 
+double MoistureExchange::dryInGas(const Particle& p, double dryMass, ParticleCellMap::Row cells,
+                                  const MoistureCellFields& gas, double& moisture, double* state, double dt,
+                                  double& latentHeat) const
+{
+    double Tg = 0.0, W = 0.0, km = 0.0;
+    for (const CellWeight& cw : cells)
+    {
+        Tg += cw.weight * gas.temperature[cw.cell];
+        W += cw.weight * gas.humidityRatio[cw.cell];
+        km += cw.weight * gas.massTransfer[cw.cell];
+    }
+    const Kernel kernel{p.diameter(), dryMass, p.temperature};
+    return model_->advanceWithLatentHeat(kernel, moisture, state, MoistAir{Tg, W, pressure_}, km, dt,
+                                         latentHeat);
+}
+
 MoistureStep MoistureExchange::advance(const CellLocator& mesh, const std::vector<Particle>& particles,
                                        const ParticleCellMap& map, const MoistureCellFields& gas,
                                        KernelMoisture& kernels, double dt) const
@@ -77,29 +93,20 @@ MoistureStep MoistureExchange::advance(const CellLocator& mesh, const std::vecto
         // a parcel: one of its originals dries, the parcel loses cg^3 times its water
         const Particle& p = particles[i];
         const double originals = p.multiplicity();
-        const Kernel kernel{p.diameter(), kernels.dryMass[i] / originals, p.temperature};
+        const double dryMass = kernels.dryMass[i] / originals;
         double* state = kernels.stateOf(i, width);
         const bool gasUsed = rows ? gasNeeded[i] != 0 : (width == 0 || model_->needsGas(state));
-        double Tg = kernel.temperature, W = 0.0, km = 0.0;
-        if (gasUsed)
-        {
-            Tg = 0.0;
-            for (const CellWeight& cw : map.cells(i))
-            {
-                Tg += cw.weight * gas.temperature[cw.cell];
-                W += cw.weight * gas.humidityRatio[cw.cell];
-                km += cw.weight * gas.massTransfer[cw.cell];
-            }
-        }
-        const MoistAir air{Tg, W, pressure_};
-        const double dW = originals
-                          * model_->advanceWithLatentHeat(kernel, kernels.moisture[i], state, air, km, dt,
-                                                          out.latentHeat[i]);
+        // inside a kernelSteps block only the block's water is released
+        const double water =
+            gasUsed
+                ? dryInGas(p, dryMass, map.cells(i), gas, kernels.moisture[i], state, dt, out.latentHeat[i])
+                : model_->release(dryMass, kernels.moisture[i], state, out.latentHeat[i]);
+        const double dW = originals * water;
         out.waterLost[i] = dW;
         for (const CellWeight& cw : map.cells(i))
         {
             sums[2 * cw.cell] += cw.weight * dW;
-            sums[2 * cw.cell + 1] += cw.weight * dW * kernel.temperature;
+            sums[2 * cw.cell + 1] += cw.weight * dW * p.temperature;
         }
     }
     mesh.complete(sums, 2);

@@ -90,6 +90,12 @@ public:
                          double dt) const;
 
 private:
+    // One original of particle p (dry mass m_d) over dt in the weighted gas
+    // of its cells: the water it loses [kg].
+    double dryInGas(const Particle& p, double dryMass, ParticleCellMap::Row cells,
+                    const MoistureCellFields& gas, double& moisture, double* state, double dt,
+                    double& latentHeat) const;
+
     std::unique_ptr<DryingModel> model_;
     double pressure_;
 };

@@ -665,3 +665,45 @@ TEST(KernelDiffusion, KernelStepsConserveAndRestartFromTheirState)
     }
     EXPECT_EQ(state, copy);
 }
+
+// Inside a block the step needs no gas (needsGas), and release() takes it
+// without: the same water, moisture, state and latent heat as the step given
+// the gas, to the bit; at a block's start (the gas needed) and for a model
+// whose every step needs the gas it refuses.
+TEST(KernelDiffusion, ReleaseIsTheStepInsideABlockWithoutTheGas)
+{
+    const KernelDiffusion blocks(diffusionProps("15", "4"));
+    const Kernel k = kernelAt(350.0);
+    std::vector<double> state(blocks.stateSize()), copy(state);
+    blocks.initialise(0.33, state.data());
+    double x = 0.33;
+    int released = 0;
+    for (int i = 0; i < 12; ++i)
+    {
+        if (blocks.needsGas(state.data()))
+        {
+            double latent = 0.0, y = x;
+            copy = state;
+            EXPECT_THROW(blocks.release(k.dryMass, y, copy.data(), latent), std::domain_error);
+            blocks.advance(k, x, state.data(), air, km, 3e-4);
+            continue;
+        }
+        copy = state;
+        double y = x, l1 = 0.0, l2 = 0.0;
+        const double w1 = blocks.advanceWithLatentHeat(k, x, state.data(), air, km, 3e-4, l1);
+        const double w2 = blocks.release(k.dryMass, y, copy.data(), l2);
+        EXPECT_EQ(w1, w2) << i;
+        EXPECT_EQ(l1, l2) << i;
+        EXPECT_EQ(x, y) << i;
+        EXPECT_EQ(state, copy) << i;
+        ++released;
+    }
+    EXPECT_EQ(released, 9);
+    auto free = make("freeWater", reaProps());
+    double latent = 0.0, y = 0.3;
+    EXPECT_THROW(free->release(k.dryMass, y, nullptr, latent), std::logic_error);
+    const KernelDiffusion resolved(diffusionProps());
+    std::vector<double> row(resolved.stateSize());
+    resolved.initialise(0.33, row.data());
+    EXPECT_THROW(resolved.release(k.dryMass, y, row.data(), latent), std::logic_error);
+}
