@@ -26,6 +26,7 @@
 #include <fstream>
 #include <iostream>
 #include <stdexcept>
+#include <utility>
 
 namespace spoutlab
 {
@@ -320,7 +321,7 @@ void LiggghtsDem::declareCirculationTrack(int width)
 std::vector<double*> LiggghtsDem::circulationTracks() const
 {
     if (!circulationTrack_) throw std::logic_error("LiggghtsDem: no circulation tracks declared");
-    const std::vector<int> atoms = localAtoms();
+    const std::vector<int>& atoms = localAtoms();
     std::vector<double*> rows(atoms.size());
     double** tracks = circulationTrack_->array_atom;
     for (std::size_t k = 0; k < atoms.size(); ++k) rows[k] = tracks[atoms[k]];
@@ -335,6 +336,7 @@ void LiggghtsDem::run(int nSteps)
     // LIGGGHTS zeroes its count at every set-up and restart write: count
     // the builds of each run here
     const long before = long(lmp_->neighbor->ncalls);
+    localAtoms_.clear();
     lmp_->input->one(cmd.c_str());
     neighbourBuilds_ += long(lmp_->neighbor->ncalls) - before;
     stepsRun_ += nSteps;
@@ -347,6 +349,7 @@ void LiggghtsDem::setup()
     // coupling pulls from the CFD side -- dragforce and convectiveHeatFlux --
     // so it runs before they are set: a 'run N' with set-up would start its
     // N steps with no fluid force and no heat flux.
+    localAtoms_.clear();
     lmp_->input->one("run 0 post no");
 }
 
@@ -427,6 +430,7 @@ void LiggghtsDem::localParticles(std::vector<Particle>& particles)
         p.coarseGraining = coarseGraining_;
         localIds_[k] = p.id;
     }
+    localAtoms_ = std::move(order);
 }
 
 
@@ -437,17 +441,8 @@ void LiggghtsDem::toAtoms(const std::vector<double>& rows, int width, Store stor
     {
         throw std::logic_error("LiggghtsDem: per-particle data differs from localParticles");
     }
-    // the atom map (atom_modify map array, required of coupled inputs)
-    auto* atom = lmp_->atom;
-    for (std::size_t k = 0; k < localIds_.size(); ++k)
-    {
-        const int i = atom->map(int(localIds_[k]));
-        if (i < 0 || i >= atom->nlocal)
-        {
-            throw std::logic_error("LiggghtsDem: an atom left this rank between steps");
-        }
-        store(i, &rows[std::size_t(width)*k]);
-    }
+    const std::vector<int>& atoms = localAtoms();
+    for (std::size_t k = 0; k < atoms.size(); ++k) store(atoms[k], &rows[std::size_t(width)*k]);
 }
 
 
@@ -492,9 +487,11 @@ LiggghtsDem::HeatContent LiggghtsDem::heatContent() const
 }
 
 
-std::vector<int> LiggghtsDem::localAtoms() const
+const std::vector<int>& LiggghtsDem::localAtoms() const
 {
-    // the atom map (atom_modify map array, required of coupled inputs)
+    if (localAtoms_.size() == localIds_.size()) return localAtoms_;
+    // LIGGGHTS ran since localParticles: the atom map (atom_modify map
+    // array, required of coupled inputs)
     auto* atom = lmp_->atom;
     std::vector<int> atoms(localIds_.size());
     for (std::size_t k = 0; k < localIds_.size(); ++k)
@@ -506,7 +503,8 @@ std::vector<int> LiggghtsDem::localAtoms() const
         }
         atoms[k] = i;
     }
-    return atoms;
+    localAtoms_ = std::move(atoms);
+    return localAtoms_;
 }
 
 
@@ -521,7 +519,7 @@ std::vector<std::size_t> LiggghtsDem::localMoisture(KernelMoisture& kernels) con
     std::vector<std::size_t> fresh;
     auto* atom = lmp_->atom;
     const std::size_t n = localIds_.size(), width = std::size_t(moistureStateSize_);
-    const std::vector<int> atoms = localAtoms();
+    const std::vector<int>& atoms = localAtoms();
     kernels.dryMass.resize(n);
     kernels.moisture.resize(n);
     // the state stays in the atoms' rows, used there until setMoisture
@@ -564,7 +562,7 @@ void LiggghtsDem::setMoisture(const KernelMoisture& kernels, const Vec3& g)
     {
         throw std::logic_error("LiggghtsDem: per-particle data differs from localParticles");
     }
-    const std::vector<int> atoms = localAtoms();
+    const std::vector<int>& atoms = localAtoms();
     auto* atom = lmp_->atom;
     double* X = moisture_->vector_atom;
     double* md = dryMass_->vector_atom;
@@ -610,10 +608,11 @@ void LiggghtsDem::setMoisture(const KernelMoisture& kernels, const Vec3& g)
 std::vector<double> LiggghtsDem::liggghtsHeatCapacities() const
 {
     auto* atom = lmp_->atom;
-    std::vector<double> C(localIds_.size());
-    for (std::size_t k = 0; k < localIds_.size(); ++k)
+    const std::vector<int>& atoms = localAtoms();
+    std::vector<double> C(atoms.size());
+    for (std::size_t k = 0; k < atoms.size(); ++k)
     {
-        const int i = atom->map(int(localIds_[k]));
+        const int i = atoms[k];
         C[k] = atom->rmass[i]*heatCapacity_[atom->type[i] - 1];
     }
     return C;
@@ -720,6 +719,7 @@ double LiggghtsDem::maxNormalStiffness() const
 
 void LiggghtsDem::command(const std::string& cmd)
 {
+    localAtoms_.clear();
     lmp_->input->one(cmd.c_str());
 }
 
@@ -797,6 +797,7 @@ void LiggghtsDem::setDecomposition(const ProcessorGrid& grid)
         // atoms may lie any number of boxes away from their new owner; the
         // fixes that move with them (contact history) need their init first
         lmp_->init();
+        localAtoms_.clear();
         LAMMPS_NS::Irregular irregular(lmp_);
         irregular.migrate_atoms();
     }
