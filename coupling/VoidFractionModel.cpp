@@ -1,6 +1,8 @@
 #include "VoidFractionModel.hpp"
 
 #include <algorithm>
+#include <cstddef>
+#include <utility>
 
 namespace spoutlab
 {
@@ -77,16 +79,44 @@ bool rowLasts(const RowOrigin& origin, const Particle& p)
            && mag(p.x - origin.x) < origin.clearance - margin;
 }
 
+// Where each particle's row of the last step is: at the same place while
+// the particles keep their order (the DEM keeps its atoms in place between
+// its sorts), else found by id.
+class PreviousSlots
+{
+public:
+    explicit PreviousSlots(const VoidFractionResult* previous)
+        : previous_(previous),
+          n_(previous ? std::min(previous->origin.size(), previous->map.nParticles()) : 0)
+    {}
+
+    // the slot of the particle with this id, now at place n; -1 if new
+    std::ptrdiff_t of(std::size_t n, long id)
+    {
+        if (n < n_ && previous_->origin[n].id == id) return static_cast<std::ptrdiff_t>(n);
+        if (n_ == 0) return -1;
+        if (byId_.empty())
+        {
+            byId_.reserve(n_);
+            for (std::size_t m = 0; m < n_; ++m) byId_.emplace_back(previous_->origin[m].id, m);
+            std::sort(byId_.begin(), byId_.end());
+        }
+        const auto it = std::lower_bound(byId_.begin(), byId_.end(), std::make_pair(id, std::size_t(0)));
+        return it != byId_.end() && it->first == id ? static_cast<std::ptrdiff_t>(it->second) : -1;
+    }
+
+private:
+    const VoidFractionResult* previous_;
+    std::size_t n_;
+    std::vector<std::pair<long, std::size_t>> byId_; // built on the first particle out of place
+};
+
 } // namespace
 
 VoidFractionResult VoidFractionModel::map(const CellLocator& mesh, const std::vector<Particle>& particles,
                                           const VoidFractionResult* previous) const
 {
-    // previous's particles are walked beside these by id (both in increasing
-    // id order, as LiggghtsDem gives them): atoms that moved to or from
-    // another rank shift the slots, not the match
-    const std::size_t nLast = previous ? std::min(previous->origin.size(), previous->map.nParticles()) : 0;
-    std::size_t m = 0;
+    PreviousSlots slots(previous);
     VoidFractionResult result;
     result.solidVolume.assign(static_cast<std::size_t>(mesh.nCells()), 0.0);
     result.centreCell.resize(particles.size());
@@ -95,8 +125,9 @@ VoidFractionResult VoidFractionModel::map(const CellLocator& mesh, const std::ve
     for (std::size_t n = 0; n < particles.size(); ++n)
     {
         const Particle& p = particles[n];
-        while (m < nLast && previous->origin[m].id < p.id) ++m;
-        const bool seen = m < nLast && previous->origin[m].id == p.id;
+        const std::ptrdiff_t slot = slots.of(n, p.id);
+        const bool seen = slot >= 0;
+        const std::size_t m = seen ? static_cast<std::size_t>(slot) : 0;
         row.clear();
         if (seen && rowLasts(previous->origin[m], p))
         {

@@ -90,7 +90,7 @@ public:
     // Every particle located and distributed afresh.
     VoidFractionResult compute(const CellLocator& mesh, const std::vector<Particle>& particles) const;
     // The same, from previous (last step's mapping; particles matched by
-    // id, both in increasing id order): a particle that has moved less than
+    // id, in any order): a particle that has moved less than
     // its row's clearance since the row was made keeps the row, since its
     // pieces are all still in the same cells and distribute() would make the
     // same row to the bit; the others search from last step's centre cell.
