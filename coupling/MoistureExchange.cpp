@@ -2,7 +2,6 @@
 
 #include "Psychrometrics.hpp"
 
-#include <algorithm>
 #include <stdexcept>
 #include <utility>
 
@@ -57,46 +56,17 @@ MoistureStep MoistureExchange::advance(const CellLocator& mesh, const std::vecto
     out.latentHeat.assign(n, 0.0);
     // per cell: water and water x T_p, with the halo's shares sent to their owners
     std::vector<double> sums(2 * nCells, 0.0);
-    // Which particles need the gas this step (the model says: not those
-    // inside a kernelSteps block, which only release its water); for them
-    // the gas is not gathered, and of state kept elsewhere (stateRows, in
-    // the caller's order) only the first cache lines are fetched, the
-    // rest for the others. Fetched a few particles ahead: the first lines
-    // twice as far, so that the model can read them when the rest is asked.
-    constexpr std::size_t ahead = 8;
-    const bool rows = !kernels.stateRows.empty();
-    std::vector<char> gasNeeded(rows ? n : 0, 1);
-    auto look = [&](std::size_t k) {
-        const double* row = kernels.stateRows[k];
-        gasNeeded[k] = model_->needsGas(row);
-        if (!gasNeeded[k]) return;
-        for (std::size_t j = 8; j < width; j += 8) __builtin_prefetch(row + j, 1);
-        __builtin_prefetch(row + width - 1, 1);
-    };
-    if (rows && width)
-    {
-        for (std::size_t k = 0; k < std::min(n, ahead); ++k) look(k);
-    }
     for (std::size_t i = 0; i < n; ++i)
     {
-        if (rows && width)
-        {
-            if (i + 2 * ahead < n)
-            {
-                const double* row = kernels.stateRows[i + 2 * ahead];
-                __builtin_prefetch(row, 1);
-                __builtin_prefetch(row + 2, 1);
-            }
-            if (i + ahead < n) look(i + ahead);
-        }
         if (map.cells(i).size() == 0) continue;
         // a parcel: one of its originals dries, the parcel loses cg^3 times its water
         const Particle& p = particles[i];
         const double originals = p.multiplicity();
         const double dryMass = kernels.dryMass[i] / originals;
         double* state = kernels.stateOf(i, width);
-        const bool gasUsed = rows ? gasNeeded[i] != 0 : (width == 0 || model_->needsGas(state));
-        // inside a kernelSteps block only the block's water is released
+        // the gas is gathered only where the model uses it: inside a
+        // kernelSteps block only the block's water is released
+        const bool gasUsed = width == 0 || model_->needsGas(state);
         const double water =
             gasUsed
                 ? dryInGas(p, dryMass, map.cells(i), gas, kernels.moisture[i], state, dt, out.latentHeat[i])

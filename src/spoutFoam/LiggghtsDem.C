@@ -349,8 +349,24 @@ void LiggghtsDem::setup()
     // coupling pulls from the CFD side -- dragforce and convectiveHeatFlux --
     // so it runs before they are set: a 'run N' with set-up would start its
     // N steps with no fluid force and no heat flux.
+    // A set-up also sorts the atoms in space, from the order they are in,
+    // and the particles come in that order (localParticles), which sets the
+    // order of every sum over them.  A restarted run's set-up would sort the
+    // restart's atoms and the running solver's its own, so the two would
+    // part at round-off: the set-up leaves the atoms where they are, and
+    // both sort next at the same step, the first multiple of the sort
+    // interval after it (LIGGGHTS sorts again within its runs).
+    auto* atom = lmp_->atom;
+    const int sortInterval = atom->sortfreq;
+    atom->sortfreq = 0;
     localAtoms_.clear();
     lmp_->input->one("run 0 post no");
+    atom->sortfreq = sortInterval;
+    if (sortInterval > 0)
+    {
+        atom->setup();   // the sort's bins, which a set-up without sorting leaves
+        atom->nextsort = (lmp_->update->ntimestep/sortInterval + 1)*sortInterval;
+    }
 }
 
 
@@ -389,32 +405,14 @@ void LiggghtsDem::localParticles(std::vector<Particle>& particles)
     const auto* atom = lmp_->atom;
     const double* T = hasHeat() ? temperature_->vector_atom : nullptr;
 
-    // In id order, so each particle keeps its place (and its cell hint)
-    // from step to step whatever order LIGGGHTS keeps its atoms in (it
-    // sorts them, and atoms move between ranks at re-neighbouring).  Ids run
-    // from 1 to the number ever inserted: while this rank holds a good share
-    // of them, placing each atom by its id is linear; on many ranks the ids
-    // are sorted instead, so nothing scales with the total count.
+    // In LIGGGHTS' own order (it sorts its atoms in space every so often,
+    // and atoms move between ranks at re-neighbouring), so that every copy
+    // to and from the atoms reads and writes their arrays in sequence; a
+    // particle keeps its place, and its cell and row (VoidFractionModel),
+    // between the sorts, and is found by its id across them.
     const int nLocal = atom->nlocal;
-    int maxId = 0;
-    for (int i = 0; i < nLocal; ++i) maxId = std::max(maxId, int(atom->tag[i]));
-    std::vector<int> order;
-    order.reserve(std::size_t(nLocal));
-    if (maxId < 4*nLocal + 64)
-    {
-        std::vector<int> atomOf(std::size_t(maxId) + 1, -1);
-        for (int i = 0; i < nLocal; ++i) atomOf[std::size_t(atom->tag[i])] = i;
-        for (const int i : atomOf) if (i >= 0) order.push_back(i);
-    }
-    else
-    {
-        for (int i = 0; i < nLocal; ++i) order.push_back(i);
-        std::sort
-        (
-            order.begin(), order.end(),
-            [atom](int a, int b) { return atom->tag[a] < atom->tag[b]; }
-        );
-    }
+    std::vector<int> order(static_cast<std::size_t>(nLocal));
+    for (int i = 0; i < nLocal; ++i) order[std::size_t(i)] = i;
 
     particles.resize(order.size());
     localIds_.resize(order.size());
@@ -508,12 +506,6 @@ const std::vector<int>& LiggghtsDem::localAtoms() const
 }
 
 
-// The particles come in id order, the atoms in LIGGGHTS' own (spatially
-// sorted) order: each particle's rows are fetched a few particles ahead, and
-// the row pointers of the 2-d arrays (f, the state) twice as far ahead.
-static constexpr std::size_t prefetchAhead = 8;
-
-
 std::vector<std::size_t> LiggghtsDem::localMoisture(KernelMoisture& kernels) const
 {
     std::vector<std::size_t> fresh;
@@ -530,13 +522,6 @@ std::vector<std::size_t> LiggghtsDem::localMoisture(KernelMoisture& kernels) con
     double* const* state = width ? moistureState_->array_atom : nullptr;
     for (std::size_t k = 0; k < n; ++k)
     {
-        if (k + prefetchAhead < n)
-        {
-            const int ahead = atoms[k + prefetchAhead];
-            __builtin_prefetch(X + ahead);
-            __builtin_prefetch(md + ahead);
-            if (width) __builtin_prefetch(state + ahead);
-        }
         const int i = atoms[k];
         kernels.moisture[k] = X[i];
         kernels.dryMass[k] = md[i];
@@ -573,17 +558,6 @@ void LiggghtsDem::setMoisture(const KernelMoisture& kernels, const Vec3& g)
     double** f = atom->f;
     for (std::size_t k = 0; k < n; ++k)
     {
-        if (k + 2*prefetchAhead < n) __builtin_prefetch(f + atoms[k + 2*prefetchAhead]);
-        if (k + prefetchAhead < n)
-        {
-            const int ahead = atoms[k + prefetchAhead];
-            __builtin_prefetch(X + ahead, 1);
-            __builtin_prefetch(md + ahead, 1);
-            __builtin_prefetch(rmass + ahead, 1);
-            __builtin_prefetch(density + ahead, 1);
-            __builtin_prefetch(radius + ahead);
-            __builtin_prefetch(f[ahead], 1);
-        }
         const int i = atoms[k];
         const double x = kernels.moisture[k], dry = kernels.dryMass[k];
         X[i] = x;
