@@ -49,6 +49,21 @@ def coarse_graining(text, path):
     return cg
 
 
+def wall_friction(text, mu, path):
+    """The particle-wall friction coefficient: 'same' as the particles' mu,
+    or a number >= 0."""
+    if text == 'same':
+        return mu
+    try:
+        value = float(text)
+    except ValueError:
+        value = math.nan
+    if not (math.isfinite(value) and value >= 0):
+        sys.exit('generate: %s: key \'muWall\' expected same (as mu) or a friction '
+                 'coefficient >= 0, got %r' % (path, text))
+    return value
+
+
 class Geometry:
     """The vessel in mm, from the dictionary."""
 
@@ -75,6 +90,8 @@ class Geometry:
         self.dz = number('cellHeight') / self.refine
         self.particles = {k: number(k) for k in
                           ('nParticles', 'dp', 'rhop', 'kn', 'e', 'mu', 'nu', 'dtDem')}
+        self.particles['muWall'] = wall_friction(d.get('muWall', 'same'),
+                                                 self.particles['mu'], path)
         self.coarseGraining = coarse_graining(d.get('coarseGraining', '1'), path)
         self.seed = insertion_seed(d.get('insertionSeed', '49979687'), path)
         self.tan = math.tan(math.radians(self.theta))

@@ -149,6 +149,33 @@ class InsertionSeed(unittest.TestCase):
                           str(stop.exception.code))
 
 
+class WallFriction(unittest.TestCase):
+    """The particle-wall friction: the particles' mu unless set (the papers
+    give one coefficient), which a friction series that sets mu must keep."""
+
+    def test_same_follows_the_particles_mu(self):
+        self.assertEqual(spoutedbed.wall_friction('same', 0.063, 'dict'), 0.063)
+
+    def test_a_number_of_zero_or_more_is_taken(self):
+        for text, mu in (('0', 0.0), ('0.5', 0.5)):
+            self.assertEqual(spoutedbed.wall_friction(text, 0.3, 'dict'), mu)
+
+    def test_the_case_overridden_as_a_friction_series_does(self):
+        case = os.path.join(os.path.dirname(__file__), '..', '..', 'openfoam_cases',
+                            'spoutDraftPlates')
+        g = spoutedbed.Geometry(spoutedbed.read_dict(os.path.join(case, 'system',
+                                                                  'spoutedBedDict'),
+                                                     ['mu=0.063']), 'dict')
+        self.assertEqual((g.particles['mu'], g.particles['muWall']), (0.063, 0.063))
+
+    def test_others_stop_naming_the_key(self):
+        for text in ('-0.1', 'nan', 'inf', 'wall'):
+            with self.assertRaises(SystemExit) as stop:
+                spoutedbed.wall_friction(text, 0.3, 'system/spoutedBedDict')
+            self.assertIn("system/spoutedBedDict: key 'muWall' expected same (as mu) or a "
+                          "friction coefficient >= 0", str(stop.exception.code))
+
+
 class CoarseGraining(unittest.TestCase):
     """The coarse-graining factor: 1 (the dictionary's), or any cg >= 1."""
 
