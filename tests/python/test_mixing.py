@@ -331,5 +331,55 @@ class CirculationNeeded(unittest.TestCase):
         self.assertIn('not reached', rows[0][1])
 
 
+
+class Candidates(unittest.TestCase):
+    """The candidates' section of RESULTS from a made-up
+    mixingCandidates.json: the reference at W_s 0.9 kg/s, one candidate at
+    1.08 (+20 %), one that did not finish."""
+
+    def setUp(self):
+        import json
+        self.case = tempfile.mkdtemp()
+        record = dict(time_s=4.0, turnover_s=3.5, M_final=0.4, M_final_particles=0.41,
+                      M_final_grid11x19=0.35)
+        runs = [dict(record, name='reference', what='nothing', changes=[], W_s_kg_s=0.9,
+                     label='mix_noplates_n10000_u2.5'),
+                dict(record, name='e0.5', what='restitution 0.5', changes=['e=0.5'],
+                     W_s_kg_s=1.08, label='mix_noplates_n10000_u2.5_e0.5')]
+        with open(os.path.join(self.case, 'mixingCandidates.json'), 'w') as f:
+            json.dump({'settings': 'made up', 'runs': runs,
+                       'failed': [dict(name='refine2', what='finer cells')]}, f)
+
+    def tearDown(self):
+        shutil.rmtree(self.case)
+
+    def test_keys_and_change_on_the_reference(self):
+        from spoutlab.protocols import results
+        rows, keys, _ = results.mixing_candidates_section(self.case, '4.3')
+        values = {k[0]: float(k[1]) for k in keys}
+        self.assertAlmostEqual(values['mixing10k.candidate.e0.5.Ws_rel'], 0.2)
+        self.assertAlmostEqual(values['mixing10k.candidate.reference.Ws_rel'], 0.0)
+        self.assertAlmostEqual(values['mixing10k.candidate.e0.5.Ws_kg_s'], 1.08)
+        self.assertEqual({results.section_of_key(k[0]) for k in keys}, {'mixingcand'})
+        self.assertIn('+20.0 %', rows[1][1])
+        self.assertEqual(rows[2][1], 'no finished run')
+        self.assertFalse(any(k[0].startswith('mixing10k.candidate.refine2') for k in keys))
+
+    def test_a_candidate_sets_the_drag_law_in_its_copy(self):
+        from spoutlab.protocols import circulation
+        from spoutlab import draglaws
+        path = os.path.join(self.case, 'couplingProperties')
+        text = ('FoamFile { version 2.0; format ascii; class dictionary; object '
+                'couplingProperties; }\ndragModel         Gidaspow;     // the papers\n'
+                'GidaspowProps { switch sharp; }\n')
+        open(path, 'w').write(text)
+        for _ in range(2):   # a resumed run sets it again
+            circulation.set_entries(path, [('dragModel', 'DiFelice')])
+        self.assertIsInstance(draglaws.from_coupling_properties(path), draglaws.DiFelice)
+        with self.assertRaises(SystemExit) as stop:
+            circulation.set_entries(path, [('dragLaw', 'DiFelice')])
+        self.assertIn("expected one top-level entry 'dragLaw', found 0", str(stop.exception.code))
+
+
 if __name__ == '__main__':
     unittest.main()

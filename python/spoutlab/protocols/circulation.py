@@ -18,6 +18,7 @@ import concurrent.futures
 import json
 import math
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -108,9 +109,11 @@ def run_all(o, pts):
             list(pool.map(lambda p: run_point(o, p[0], p[1], p[2], settled), batch))
 
 
-def run_point(o, label, u, overrides, settled):
+def run_point(o, label, u, overrides, settled, entries=()):
     """Run one point unless done; settled maps the settling overrides to a
-    settled bed already made by another point."""
+    settled bed already made by another point; entries, (key, value) pairs
+    set in the copy's constant/couplingProperties (what no spoutedBedDict
+    key sets, e.g. the drag law), which do not change the settled bed."""
     work = os.path.join('runs', label)
     result = os.path.join(work, 'circulation.csv')
     bed = os.path.join(work, 'DEM', 'settled.restart')
@@ -126,6 +129,7 @@ def run_point(o, label, u, overrides, settled):
             'runs', 'processor*', 'DEM', 'particles', 'postProcessing', 'log.*',
             '[0-9]*', '*.png', '*.csv'), symlinks=True)
         shutil.copytree('0.orig', os.path.join(work, '0.orig'), dirs_exist_ok=True)
+    set_entries(os.path.join(work, 'constant', 'couplingProperties'), entries)
     if key in settled and os.path.isfile(settled[key]) and not os.path.isfile(bed):
         os.makedirs(os.path.dirname(bed), exist_ok=True)
         shutil.copy(settled[key], bed)
@@ -138,6 +142,21 @@ def run_point(o, label, u, overrides, settled):
             sys.exit('circulation: run %s failed, see %s/log.Allrun' % (label, work))
     settled.setdefault(key, bed)
     return work
+
+
+def set_entries(path, entries):
+    """Top-level entries of an OpenFOAM dictionary set as text (its
+    includes are written later, by the case's generate)."""
+    if not entries:
+        return
+    text = open(path).read()
+    for key, value in entries:
+        text, n = re.subn(r'^%s\s+[^;]*;.*$' % re.escape(key),
+                          '%s %s;   // set by the protocol' % (key, value), text, flags=re.M)
+        if n != 1:
+            sys.exit('circulation: %s: expected one top-level entry %r, found %d'
+                     % (path, key, n))
+    open(path, 'w').write(text)
 
 
 def finished(work):

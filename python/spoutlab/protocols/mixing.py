@@ -24,6 +24,15 @@ and the first time M reaches 0.9 of its random-mixing value at 55 x 57 mm
 (the papers' Fig 10b after 2 s on their scale, where random mixing gives 1;
 our cells cannot give more than about 0.88-0.92) is noted.
 
+With --candidates the protocol asks instead whether anything in the model
+moves the circulation, and so the mixing, toward the papers': the
+10 000-particle bed without plates at 2.5 m/s once as the case stands and
+once per candidate (CANDIDATES), each changing one thing, none tuned, in
+runs/mix_noplates_n10000_u2.5_<candidate>/ (a candidate that changes the
+contacts settles its own bed); results in candidates.txt and
+mixingCandidates.json (for protocols/results --mixingCandidates) and
+mixingcand_M.png (M against time, every run).
+
 Results: mixing.txt (every finished run; mixing.json, its numbers for
 protocols/results), mixing.csv (M against time), mixingCellSize.csv (M_final
 against the sampling-cell size), and two figures per bed,
@@ -37,6 +46,7 @@ postProcessing/mixingParticles/particles.pvd (arrays label_left-right,
 label_lower-upper).
 """
 import argparse
+import concurrent.futures
 import csv
 import json
 import math
@@ -58,6 +68,25 @@ POINTS = [('no-plates', 10000, 2.0), ('no-plates', 26000, 2.5), ('no-plates', 26
           ('no-plates', 10000, 2.5), ('no-plates', 10000, 3.0), ('no-plates', 26000, 2.0)]
 
 DEFAULT_TIME = 4.0   # simulated seconds per run
+
+# Whether anything in the model moves W_s toward the circulation the
+# papers' mixing needs (issue 25 item 3): one run per candidate, each
+# changing one thing from the reference, none tuned.  name, what changes,
+# spoutedBedDict overrides, couplingProperties entries.
+CANDIDATE_POINT = ('no-plates', 10000, 2.5)
+CANDIDATES = [
+    ('reference', "nothing: the papers' mu 0.3 and e 0.9 for every contact, Gidaspow's "
+     'drag, 11 x 19 mm gas cells', [], []),
+    ('mu0.1', 'friction 0.1 for 0.3, particles and walls', ['mu=0.1'], []),
+    ('e0.5', 'restitution 0.5 for 0.9, every contact: maize kernels on steel as measured '
+     '(maize on maize 0.32; Agriculture, Sep 2024, contact parameters of maize-kernel DEM '
+     'models)', ['e=0.5'], []),
+    ('muWall0', "frictionless walls for 0.3: the 40 mm slab's front and back (most wall "
+     'contacts), the sides and the base', ['muWall=0'], []),
+    ('DiFelice', "Di Felice's drag for Gidaspow's (Ergun / Wen-Yu)", [],
+     [('dragModel', 'DiFelice')]),
+    ('refine2', 'gas cells 5.5 x 9.5 mm for 11 x 19 mm', ['refine=2'], []),
+]
 
 
 def point(text):
@@ -87,6 +116,10 @@ def parse(argv):
     p.add_argument('-np', type=int, default=1, metavar='RANKS', help='MPI ranks per run')
     p.add_argument('-j', '--jobs', type=int, default=1, metavar='JOBS',
                    help='runs side by side (default %(default)s)')
+    p.add_argument('--candidates', action='store_true',
+                   help='run the candidates that might move the circulation (CANDIDATES: '
+                        'the 10 000-particle bed without plates at 2.5 m/s, one change '
+                        'each) instead of --points')
     cli.add_overrides(p, 'system/spoutedBedDict for every run')
     a = cli.parse(p, argv)
     if not 0 < a.final <= a.time or not 0 < a.write <= a.time:
@@ -143,9 +176,9 @@ class Run:
     M_final against the sampling-cell size from mixingCellSize.csv, W_s from
     its circulation.csv."""
 
-    def __init__(self, vessel, n, u, final):
+    def __init__(self, vessel, n, u, final, run=None):
         self.vessel, self.n, self.u = vessel, n, u
-        self.label = label(vessel, n, u)
+        self.label = run or label(vessel, n, u)
         self.work = os.path.join('runs', self.label)
         evaluate(self.work)
         head, *rows = [r.strip().split(',') for r in
@@ -341,6 +374,87 @@ def report(a):
                 'plot %s\n' % (what, n, ', \\\n     '.join(curves)))
 
 
+def candidate_run(name):
+    """A candidate's run under runs/ (the reference's is the point's own)."""
+    return label(*CANDIDATE_POINT) + ('' if name == 'reference' else '_' + name)
+
+
+def run_candidates(o):
+    """Every candidate's run, --jobs at a time, those sharing a settled bed
+    after the first that makes it; a run that fails is reported, not fatal."""
+    vessel, n, u = CANDIDATE_POINT
+    point = ['plates=%s' % ('yes' if vessel == 'plates' else 'no'), 'nParticles=%d' % n]
+    settled = {}
+
+    def one(c):
+        name, _, overrides, entries = c
+        try:
+            circulation.run_point(o, candidate_run(name), u, point + overrides, settled,
+                                  entries)
+        except SystemExit as e:
+            print('mixing: candidate %s: %s' % (name, e), flush=True)
+
+    first = [c for c in CANDIDATES if not c[2]]
+    with concurrent.futures.ThreadPoolExecutor(o['jobs']) as pool:
+        for batch in (first[:1], first[1:] + [c for c in CANDIDATES if c[2]]):
+            list(pool.map(one, batch))
+
+
+def report_candidates(a):
+    """candidates.txt, mixingCandidates.json and mixingcand_M.png: each
+    candidate's W_s, turnover and M_final beside the reference's."""
+    vessel, n, u = CANDIDATE_POINT
+    runs, failed = [], []
+    for name, what, overrides, entries in CANDIDATES:
+        r = None
+        if os.path.isfile(os.path.join('runs', candidate_run(name), 'postProcessing',
+                                       'mixing.csv')):
+            r = Run(vessel, n, u, a.final, candidate_run(name))
+        (runs if r else failed).append((name, what, overrides, entries, r))
+    reference = [r for name, _, _, _, r in runs if name == 'reference']
+    if not reference:
+        sys.exit('mixing: the reference candidate did not finish (runs/%s): nothing to '
+                 'compare with' % candidate_run('reference'))
+    ref = reference[0]
+    lr = 'M_papers ' + mixing.DEFAULT_SPLIT
+    settings = ('%s, %d particles, u_s = %g m/s, gas from the settled bed at t = 0, %g s; '
+                'M_final the mean over the last %g s, left-right halves, 55 x 57 mm sampling '
+                'cells, weighting cells (eq 18); W_s from the last 1.8 s'
+                % ('no draft plates' if vessel == 'no-plates' else 'draft plates', n, u,
+                   a.time, a.final))
+    records = []
+    for name, what, overrides, entries, r in runs:
+        records.append(dict(
+            name=name, what=what, changes=overrides + ['%s %s' % e for e in entries],
+            label=r.label, time_s=float('%.3g' % r.t[-1]), W_s_kg_s=float('%.4g' % r.w_s),
+            turnover_s=float('%.4g' % r.turnover),
+            M_final=float('%.3f' % r.final[lr]),
+            M_final_particles=float('%.3f' % r.final['M_particles ' + mixing.DEFAULT_SPLIT]),
+            M_final_grid11x19=float('%.3f' % r.papers_grid['M_papers'])))
+    lines = ['# candidates: %s' % settings]
+    lines += ['%s (%s): W_s %.3f kg/s (%+.1f %% on the reference), turnover %.2f s, '
+              'M_final %.3f (by particles %.3f; 11 x 19 mm cells %.3f)'
+              % (c['name'], c['what'], c['W_s_kg_s'], 100 * (c['W_s_kg_s'] / ref.w_s - 1),
+                 c['turnover_s'], c['M_final'], c['M_final_particles'],
+                 c['M_final_grid11x19']) for c in records]
+    lines += ['%s (%s): no finished run' % (name, what) for name, what, _, _, _ in failed]
+    text = '\n'.join(lines) + '\n'
+    open('candidates.txt', 'w').write(text)
+    sys.stdout.write(text)
+    with open('mixingCandidates.json', 'w') as f:
+        json.dump({'settings': settings, 'runs': records,
+                   'failed': [dict(name=c[0], what=c[1]) for c in failed]}, f, indent=1)
+        f.write('\n')
+    curves = ['"%s" skip 1 using 1:%d with lines lw 2 title "%s"'
+              % (os.path.join(r.work, 'postProcessing', 'mixing.csv'), 2 + COLUMNS.index(lr),
+                 name) for name, _, _, _, r in runs]
+    sc.plot('mixingcand_M.png',
+            'set datafile separator ","\nset grid\nset key top left\n'
+            'set title "Degree of mixing, one change each, %d particles, no plates, %g m/s"\n'
+            'set xlabel "time [s]"\nset ylabel "M (papers, left-right, 55 x 57 mm)"\n'
+            'set yrange [-0.1:1.1]\nplot %s\n' % (n, u, ', \\\n     '.join(curves)))
+
+
 def set_write_interval(path, dt):
     """The top-level writeInterval of a controlDict, set as text (before any
     OpenFOAM program has run in the case)."""
@@ -356,6 +470,10 @@ def main(argv):
     set_write_interval('system/controlDict', a.write)
     o = dict(kick='', time=a.time, average=min(1.8, a.time), np=a.np, n=None,
              overrides=a.overrides, jobs=a.jobs)
+    if a.candidates:
+        run_candidates(o)
+        report_candidates(a)
+        return 0
     points = [(label(v, n, u), u, ['plates=%s' % ('yes' if v == 'plates' else 'no'),
                                    'nParticles=%d' % n], None, None) for v, n, u in a.points]
     circulation.run_all(o, points)

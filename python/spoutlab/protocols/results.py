@@ -603,6 +603,50 @@ def mixing_section(case):
     return rows, keys, [(f, f[:-4] + tag + '.png') for f in beds] + figures
 
 
+def needed_rate(new, figure_dir):
+    """mixing10k.Ws_needed_kg_s as this call's mixing section gives it, else
+    as results.csv has it (None if neither does)."""
+    keys = new['mixing'][1] if 'mixing' in new else []
+    ref = reference_values(os.path.join(os.path.dirname(figure_dir), 'results.csv'))
+    return ([k[1] for k in keys if k[0] == 'mixing10k.Ws_needed_kg_s']
+            or [ref.get('mixing10k.Ws_needed_kg_s')])[0]
+
+
+def mixing_candidates_section(case, needed):
+    """Whether anything in the model moves W_s toward the circulation the
+    papers' mixing needs (protocols/mixing --candidates'
+    mixingCandidates.json): per candidate W_s, its change on the reference
+    run and M_final; needed, the W_s the papers' M after 2 s would need
+    (mixing10k.Ws_needed_kg_s), if known."""
+    numbers = read_json(case, 'mixingCandidates.json', 'protocols/mixing --candidates')
+    settings = numbers['settings']
+    paper = ('W_s about %s kg/s for the papers\' M after 2 s (mixing10k.Ws_needed_kg_s)'
+             % needed if needed else '')
+    rows, keys = [], []
+    reference = [c['W_s_kg_s'] for c in numbers['runs'] if c['name'] == 'reference'][0]
+    for c in numbers['runs']:
+        rel = c['W_s_kg_s'] / reference - 1
+        hours = '%.2f h' % (wall_time(os.path.join(case, 'runs', c['label'])) / 3600)
+        change = ' '.join(c['changes']) or 'none'
+        rows.append(('W_s and M_final, %s: %s' % (c['name'], c['what']),
+                     '%.3f kg/s (%+.1f %% on the reference), turnover %.2f s; M_final %.3f (by '
+                     'particles %.3f; 11 x 19 mm cells %.3f)'
+                     % (c['W_s_kg_s'], 100 * rel, c['turnover_s'], c['M_final'],
+                        c['M_final_particles'], c['M_final_grid11x19']),
+                     paper, '%s; change: %s; run %s' % (settings, change, c['label']), hours))
+        key = 'mixing10k.candidate.%s.' % c['name']
+        note = 'candidate %s (%s; change: %s); %s' % (c['name'], c['what'], change, settings)
+        keys += [(key + 'Ws_kg_s', '%.4g' % c['W_s_kg_s'], 'kg/s', needed or '', note),
+                 (key + 'Ws_rel', '%.3f' % rel, '', '',
+                  'W_s / the reference run\'s W_s - 1; ' + note),
+                 (key + 'M_final', '%.3f' % c['M_final'], '', '0.9-1',
+                  'weighting cells (eq 18), 55 x 57 mm sampling cells; ' + note)]
+    for c in numbers.get('failed', []):
+        rows.append(('W_s and M_final, %s: %s' % (c['name'], c['what']), 'no finished run',
+                     paper, settings, ''))
+    return rows, keys, [('mixingcand_M.png', 'mixingcand_M.png')]
+
+
 def mixing_circulation(runs, level):
     """The circulation rate the papers' M = level after 2 s of the 10 000-
     particle bed would need.  The papers' scale has random mixing at 1, ours
@@ -1022,6 +1066,8 @@ SECTIONS = [
     ('maps', 'Gas and particle velocity without draft plates (no-draft paper, Figs 3-4)'),
     ('mixing', 'Degree of mixing (draft-plate paper section 4.6, Fig 10; no-draft paper '
                'Figs 5-6)'),
+    ('mixingcand', 'Mixing: whether anything in the model moves the circulation toward the '
+                   "papers' (issue 25 item 3), one run per candidate"),
     ('bed3d', 'Three-dimensional spouted bed: u_ms and dP_ms against Mathur and Gishler '
               '(issue 27 item 4)'),
     ('bed3dcoarse', 'Three-dimensional spouted bed coarse-grained against cg = 1 (issue 27)'),
@@ -1038,6 +1084,8 @@ def section_of_key(key):
         return 'drytime'
     if re.match(r'cg[\d.]+\.', key):
         return 'coarse'
+    if key.startswith('mixing10k.candidate.'):
+        return 'mixingcand'
     if key.startswith('mixing'):
         return 'mixing'
     if re.match(r'bed3d\.cg[\d.]+\.', key):
@@ -1055,7 +1103,8 @@ FIGURES = {'ums': ('fig2_', 'fig3_'), 'friction': ('fig7_',), 'velocity': ('fig6
            'profiles': ('fig4_5_',), 'heat': ('fig11_', 'fig12_'), 'drying': ('drying_',),
            'drytime': ('drytime_',), 'coarse': ('coarse_',),
            'noplates10k': ('noplates10k_',), 'noplates26k': ('noplates26k_',),
-           'maps': ('noplates_maps_',), 'mixing': ('mixing_',), 'bed3d': ('bed3d_',),
+           'maps': ('noplates_maps_',), 'mixing': ('mixing_',), 'mixingcand': ('mixingcand_',),
+           'bed3d': ('bed3d_',),
            'bed3dcoarse': ('bed3dcg',)}
 
 
@@ -1090,7 +1139,7 @@ def coarse_runs_section(coarse, runs, figure_dir):
 
 
 def build(ums, circ, heat, figure_dir, noplates=(), maps=None, mixing=(), drying=None,
-          drytime=None, coarse=(), bed3d=(), coarse_runs=None):
+          drytime=None, coarse=(), bed3d=(), coarse_runs=None, mixing_candidates=None):
     """section -> (table rows, results.csv rows, figure names) for the runs given."""
     new = {}
 
@@ -1167,6 +1216,10 @@ def build(ums, circ, heat, figure_dir, noplates=(), maps=None, mixing=(), drying
             r, k, p = mixing_section(case)
             rows, keys, pngs = rows + r, keys + k, pngs + copy(case, p, figure_dir)
         new['mixing'] = (rows, keys, pngs)
+    if mixing_candidates:
+        rows, keys, pngs = mixing_candidates_section(mixing_candidates,
+                                                     needed_rate(new, figure_dir))
+        new['mixingcand'] = (rows, keys, figures('mixingcand', mixing_candidates, pngs))
     if bed3d:
         remove_figures('bed3d', figure_dir)
         rows, keys, pngs = [], [], []
@@ -1250,6 +1303,9 @@ def parse(argv):
     p.add_argument('--mixing', action='append', default=[], metavar='MIXING_DIR',
                    help='a case copy where protocols/mixing ran (mixing.txt); repeat for '
                         'several, e.g. one with longer runs')
+    p.add_argument('--mixingCandidates', metavar='CANDIDATES_DIR',
+                   help='a case copy where protocols/mixing --candidates ran '
+                        '(mixingCandidates.json)')
     p.add_argument('--bed3d', action='append', default=[], metavar='UMS3D_DIR',
                    help='a copy of openfoam_cases/spoutedBed3D where protocols/'
                         'minimumSpouting3D ran (repeat for other realisations)')
@@ -1269,8 +1325,8 @@ def main(argv):
     p, a = parse(argv)
     out, cases, heat, noplates, maps, mixing = (a.out, a.cases, a.heat, a.noplates, a.maps,
                                                 a.mixing)
-    if not (cases or heat or noplates or maps or mixing or a.drying or a.dryingTime
-            or a.coarse or a.bed3d or a.coarseCirculation or a.coarseHeat
+    if not (cases or heat or noplates or maps or mixing or a.mixingCandidates or a.drying
+            or a.dryingTime or a.coarse or a.bed3d or a.coarseCirculation or a.coarseHeat
             or a.coarseSpeedup or a.bed3dCoarse):
         p.print_help()
         return 2
@@ -1279,7 +1335,7 @@ def main(argv):
     new = build(ums, circ, heat, os.path.join(os.path.dirname(out), 'figures'), noplates, maps,
                 mixing, a.drying, a.dryingTime, a.coarse, a.bed3d,
                 {'circulation': a.coarseCirculation, 'heat': a.coarseHeat,
-                 'speedup': a.coarseSpeedup, 'bed3d': a.bed3dCoarse})
+                 'speedup': a.coarseSpeedup, 'bed3d': a.bed3dCoarse}, a.mixingCandidates)
     old = old_sections(out)
     lines = ['# SpoutLab vs the source papers', '',
              'Written by `openfoam_cases/spoutDraftPlates/protocols/results` from the protocol',
