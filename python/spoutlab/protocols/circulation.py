@@ -111,9 +111,10 @@ def run_all(o, pts):
 
 def run_point(o, label, u, overrides, settled, entries=()):
     """Run one point unless done; settled maps the settling overrides to a
-    settled bed already made by another point; entries, (key, value) pairs
-    set in the copy's constant/couplingProperties (what no spoutedBedDict
-    key sets, e.g. the drag law), which do not change the settled bed."""
+    settled bed already made by another point; entries, (file, key, value)
+    set in the copy's dictionaries (what no spoutedBedDict key sets, e.g.
+    the drag law in constant/couplingProperties), which do not change the
+    settled bed."""
     work = os.path.join('runs', label)
     result = os.path.join(work, 'circulation.csv')
     bed = os.path.join(work, 'DEM', 'settled.restart')
@@ -129,7 +130,8 @@ def run_point(o, label, u, overrides, settled, entries=()):
             'runs', 'processor*', 'DEM', 'particles', 'postProcessing', 'log.*',
             '[0-9]*', '*.png', '*.csv'), symlinks=True)
         shutil.copytree('0.orig', os.path.join(work, '0.orig'), dirs_exist_ok=True)
-    set_entries(os.path.join(work, 'constant', 'couplingProperties'), entries)
+    for path, key, value in entries:
+        set_entries(os.path.join(work, path), [(key, value)])
     if key in settled and os.path.isfile(settled[key]) and not os.path.isfile(bed):
         os.makedirs(os.path.dirname(bed), exist_ok=True)
         shutil.copy(settled[key], bed)
