@@ -341,11 +341,14 @@ class Candidates(unittest.TestCase):
         import json
         self.case = tempfile.mkdtemp()
         record = dict(time_s=4.0, turnover_s=3.5, M_final=0.4, M_final_particles=0.41,
-                      M_final_grid11x19=0.35)
+                      M_final_grid11x19=0.35, spouts=True, regime='SPOUTS over 19 write times')
         runs = [dict(record, name='reference', what='nothing', changes=[], W_s_kg_s=0.9,
                      label='mix_noplates_n10000_u2.5'),
                 dict(record, name='e0.5', what='restitution 0.5', changes=['e=0.5'],
-                     W_s_kg_s=1.08, label='mix_noplates_n10000_u2.5_e0.5')]
+                     W_s_kg_s=1.08, label='mix_noplates_n10000_u2.5_e0.5'),
+                dict(record, name='muWall0', what='frictionless walls', changes=['muWall=0'],
+                     W_s_kg_s=0.14, label='mix_noplates_n10000_u2.5_muWall0', spouts=False,
+                     regime='does NOT spout over 19 write times')]
         with open(os.path.join(self.case, 'mixingCandidates.json'), 'w') as f:
             json.dump({'settings': 'made up', 'runs': runs,
                        'failed': [dict(name='refine2', what='finer cells')]}, f)
@@ -362,7 +365,9 @@ class Candidates(unittest.TestCase):
         self.assertAlmostEqual(values['mixing10k.candidate.e0.5.Ws_kg_s'], 1.08)
         self.assertEqual({results.section_of_key(k[0]) for k in keys}, {'mixingcand'})
         self.assertIn('+20.0 %', rows[1][1])
-        self.assertEqual(rows[2][1], 'no finished run')
+        self.assertNotIn('does not spout', rows[1][1])
+        self.assertIn('the bed does not spout (does NOT spout over 19 write times)', rows[2][1])
+        self.assertEqual(rows[3][1], 'no finished run')
         self.assertFalse(any(k[0].startswith('mixing10k.candidate.refine2') for k in keys))
 
     def test_a_candidate_sets_the_drag_law_in_its_copy(self):

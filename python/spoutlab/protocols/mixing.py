@@ -59,6 +59,7 @@ from spoutlab import cli
 from spoutlab import mixing
 from spoutlab import spoutedbed
 from spoutlab import bedmaps
+from spoutlab import spoutregime
 from spoutlab.protocols import circulation
 
 # draft-plate paper Fig 10a/b and no-draft paper Fig 6 (26 000 at 2.0 m/s),
@@ -426,7 +427,9 @@ def report_candidates(a):
                    a.time, a.final))
     records = []
     for name, what, overrides, entries, r in runs:
-        records.append(dict(
+        # W_s by eq 14 means circulation only where the bed spouts
+        regime = spoutregime.bed_spouts(spoutedbed.load(r.work), r.work, r.t[-1] - 1.8, r.t[-1])
+        records.append(dict(spouts=regime.spouts, regime=regime.describe(),
             name=name, what=what, changes=overrides + ['%s %s' % e[1:] for e in entries],
             label=r.label, time_s=float('%.3g' % r.t[-1]), W_s_kg_s=float('%.4g' % r.w_s),
             turnover_s=float('%.4g' % r.turnover),
@@ -435,10 +438,10 @@ def report_candidates(a):
             M_final_grid11x19=float('%.3f' % r.papers_grid['M_papers'])))
     lines = ['# candidates: %s' % settings]
     lines += ['%s (%s): W_s %.3f kg/s (%+.1f %% on the reference), turnover %.2f s, '
-              'M_final %.3f (by particles %.3f; 11 x 19 mm cells %.3f)'
+              'M_final %.3f (by particles %.3f; 11 x 19 mm cells %.3f); the bed %s'
               % (c['name'], c['what'], c['W_s_kg_s'], 100 * (c['W_s_kg_s'] / ref.w_s - 1),
                  c['turnover_s'], c['M_final'], c['M_final_particles'],
-                 c['M_final_grid11x19']) for c in records]
+                 c['M_final_grid11x19'], c['regime']) for c in records]
     lines += ['%s (%s): no finished run' % (name, what) for name, what, _, _, _ in failed]
     text = '\n'.join(lines) + '\n'
     open('candidates.txt', 'w').write(text)

@@ -628,14 +628,18 @@ def mixing_candidates_section(case, needed):
         rel = c['W_s_kg_s'] / reference - 1
         hours = '%.2f h' % (wall_time(os.path.join(case, 'runs', c['label'])) / 3600)
         change = ' '.join(c['changes']) or 'none'
+        spouts = '' if c['spouts'] else '; by the spout classifier the bed does not ' \
+            'spout (%s): W_s is then no spout-downcomer circulation' % c['regime']
         rows.append(('W_s and M_final, %s: %s' % (c['name'], c['what']),
                      '%.3f kg/s (%+.1f %% on the reference), turnover %.2f s; M_final %.3f (by '
-                     'particles %.3f; 11 x 19 mm cells %.3f)'
+                     'particles %.3f; 11 x 19 mm cells %.3f)%s'
                      % (c['W_s_kg_s'], 100 * rel, c['turnover_s'], c['M_final'],
-                        c['M_final_particles'], c['M_final_grid11x19']),
+                        c['M_final_particles'], c['M_final_grid11x19'], spouts),
                      paper, '%s; change: %s; run %s' % (settings, change, c['label']), hours))
         key = 'mixing10k.candidate.%s.' % c['name']
-        note = 'candidate %s (%s; change: %s); %s' % (c['name'], c['what'], change, settings)
+        note = 'candidate %s (%s; change: %s; %s); %s' % (
+            c['name'], c['what'], change, 'spouts' if c['spouts'] else 'does not spout',
+            settings)
         keys += [(key + 'Ws_kg_s', '%.4g' % c['W_s_kg_s'], 'kg/s', needed or '', note),
                  (key + 'Ws_rel', '%.3f' % rel, '', '',
                   'W_s / the reference run\'s W_s - 1; ' + note),
