@@ -640,7 +640,9 @@ def mixing_candidates_section(case, needed):
         note = 'candidate %s (%s; change: %s; %s); %s' % (
             c['name'], c['what'], change, 'spouts' if c['spouts'] else 'does not spout',
             settings)
-        keys += [(key + 'Ws_kg_s', '%.4g' % c['W_s_kg_s'], 'kg/s', needed or '', note),
+        keys += [(key + 'Ws_kg_s', '%.4g' % c['W_s_kg_s'], 'kg/s', '',
+                  note + ('; the papers\' M after 2 s would need %s kg/s' % needed
+                          if needed else '')),
                  (key + 'Ws_rel', '%.3f' % rel, '', '',
                   'W_s / the reference run\'s W_s - 1; ' + note),
                  (key + 'M_final', '%.3f' % c['M_final'], '', '0.9-1',
