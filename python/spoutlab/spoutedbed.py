@@ -37,16 +37,22 @@ def insertion_seed(text, path):
     return seed
 
 
+def at_least(text, lowest, path, key, expected):
+    """A finite number >= lowest, else one line naming the key and what it
+    expected."""
+    try:
+        value = float(text)
+    except ValueError:
+        value = math.nan
+    if not (math.isfinite(value) and value >= lowest):
+        sys.exit('generate: %s: key %r expected %s, got %r' % (path, key, expected, text))
+    return value
+
+
 def coarse_graining(text, path):
     """The coarse-graining factor cg >= 1 (a DEM particle a parcel of cg^3)."""
-    try:
-        cg = float(text)
-    except ValueError:
-        cg = math.nan
-    if not (math.isfinite(cg) and cg >= 1):
-        sys.exit('generate: %s: key \'coarseGraining\' expected a factor >= 1 (parcel '
-                 'diameter / particle diameter), got %r' % (path, text))
-    return cg
+    return at_least(text, 1, path, 'coarseGraining',
+                    'a factor >= 1 (parcel diameter / particle diameter)')
 
 
 def wall_friction(text, mu, path):
@@ -54,14 +60,7 @@ def wall_friction(text, mu, path):
     or a number >= 0."""
     if text == 'same':
         return mu
-    try:
-        value = float(text)
-    except ValueError:
-        value = math.nan
-    if not (math.isfinite(value) and value >= 0):
-        sys.exit('generate: %s: key \'muWall\' expected same (as mu) or a friction '
-                 'coefficient >= 0, got %r' % (path, text))
-    return value
+    return at_least(text, 0, path, 'muWall', 'same (as mu) or a friction coefficient >= 0')
 
 
 class Geometry:
