@@ -12,6 +12,8 @@ def slope(xs, ys):
     return sum((x - mx) * (y - my) for x, y in zip(xs, ys)) / sxx if sxx > 0 else 0.0
 
 
+# z/R_d of the paper's profiles across the spout and the downcomers (Fig 4)
+HEIGHTS = [5.873, 8.637, 11.400, 14.164, 16.927, 19.691, 22.454, 25.218]
 WALL_BAND = 2.0     # 'next to the walls' in Fig 5: within 2 R_d (55 mm, 7 d_p) of them
 
 

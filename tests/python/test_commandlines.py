@@ -13,13 +13,15 @@ import tempfile
 import unittest
 
 from spoutlab.protocols import circulation, drying, dryingtime, heattransfer, minimumspouting
-from spoutlab.protocols import coarsespeedup, mixing, profiles, results, velocitymaps
+from spoutlab.protocols import coarsespeedup, mixing, profiles, results, spoutheight
+from spoutlab.protocols import velocitymaps
 
 REPOSITORY = os.path.abspath(os.environ.get('SPOUTLAB_DIR', '../..'))
 COMMANDS = ['generate', 'inletVelocity', 'evaluate'] + [
     os.path.join('protocols', p) for p in ('minimumSpouting', 'circulation', 'profiles',
                                           'velocityMaps', 'heatTransfer', 'drying', 'results',
-                                          'mixing', 'dryingTime', 'coarseSpeedup')]
+                                          'mixing', 'dryingTime', 'coarseSpeedup',
+                                          'spoutHeight')]
 CASE = None
 
 
@@ -74,6 +76,7 @@ class Commands(unittest.TestCase):
                 ('protocols/circulation', ['velocity', '--u', '1.4;1.6'], 'argument --u'),
                 ('protocols/circulation', ['velocity', '--kick', '2'], 'argument --kick'),
                 ('protocols/velocityMaps', ['--points', '3000'], 'argument --points'),
+                ('protocols/spoutHeight', ['--runs', 'u1.4,u9'], 'argument --runs'),
                 ('inletVelocity', ['fast'], 'argument NUMBER'),
                 ('generate', ['He'], 'argument key=value')):
             with self.subTest(command=command, args=args):
@@ -129,6 +132,13 @@ class Defaults(unittest.TestCase):
         self.assertEqual((o['u'], o['mu'], o['jobs'], o['n'], o['overrides']),
                          ([1.25], [0.02, 0.063, 0.1, 0.2, 0.3], 2, '1500',
                           ['He=152', 'e=0.8']))
+
+    def test_spout_height(self):
+        o = spoutheight.parse(['--runs', 'u2_hot,u1.4', 'He=152'])
+        self.assertEqual((o['runs'], o['time'], o['average'], o['write'], o['kick'],
+                          o['overrides']), (['u2_hot', 'u1.4'], 5.0, 3.0, 0.05, '2.0,1.0',
+                                            ['He=152']))
+        self.assertEqual(spoutheight.parse([])['runs'], [r.name for r in spoutheight.RUNS])
 
     def test_profiles_and_velocity_maps(self):
         o = profiles.parse([])

@@ -18,6 +18,9 @@ COMMANDS = {
                     'velocity and the friction coefficient (draft-plate paper section 4.4)'),
     'profiles': ('profiles', 'time-averaged spout and downcomer profiles (draft-plate '
                  'paper sections 4.2-4.3, Figs 4-5)'),
+    'spoutHeight': ('spoutheight', 'the spout along its height: particle and gas velocity, '
+                    'voidage, slip Re and h against z, and the slugs (draft-plate paper '
+                    'Figs 4 and 12)'),
     'velocityMaps': ('velocitymaps', 'time-averaged gas and particle velocity without '
                      'draft plates (no-draft paper, Figs 3-4)'),
     'mixing': ('mixing', 'the degree of mixing against time (draft-plate paper Fig 10, '

@@ -147,17 +147,28 @@ def run_point(o, label, u, overrides, settled, entries=()):
 
 
 def set_entries(path, entries):
-    """Top-level entries of an OpenFOAM dictionary set as text (its
-    includes are written later, by the case's generate)."""
+    """Entries of an OpenFOAM dictionary set as text (its includes are
+    written later, by the case's generate): a top-level key, or 'sub/key'
+    for a key of a top-level sub-dictionary."""
     if not entries:
         return
     text = open(path).read()
     for key, value in entries:
-        text, n = re.subn(r'^%s\s+[^;]*;.*$' % re.escape(key),
-                          '%s %s;   // set by the protocol' % (key, value), text, flags=re.M)
+        sub, _, name = key.rpartition('/')
+        start, end = 0, len(text)
+        if sub:
+            block = re.search(r'^%s\s*\{[^}]*\}' % re.escape(sub), text, flags=re.M)
+            if not block:
+                sys.exit('circulation: %s: expected a top-level sub-dictionary %r' % (path, sub))
+            start, end = block.span()
+        pattern = r'((?:^|[{;])\s*)%s\s+[^;]*;' if sub else r'^()%s\s+[^;]*;.*$'
+        part, n = re.subn(pattern % re.escape(name),
+                          r'\g<1>%s %s;%s' % (name, value, '' if sub else '   // set by the protocol'),
+                          text[start:end], flags=re.M)
         if n != 1:
-            sys.exit('circulation: %s: expected one top-level entry %r, found %d'
-                     % (path, key, n))
+            sys.exit('circulation: %s: expected one %s entry %r, found %d'
+                     % (path, 'sub-dictionary' if sub else 'top-level', key, n))
+        text = text[:start] + part + text[end:]
     open(path, 'w').write(text)
 
 

@@ -653,6 +653,45 @@ def mixing_candidates_section(case, needed):
     return rows, keys, [('mixingcand_M.png', 'mixingcand_M.png')]
 
 
+def spout_height_section(case):
+    """The spout along its height (protocols/spoutHeight's spoutHeight.json):
+    per run the slopes along the axis, h beside the plates over h on the
+    axis and the slugs; keys spout.<quantity>_<run's key>."""
+    numbers = read_json(case, 'spoutHeight.json', 'protocols/spoutHeight')
+    settings = ('%g s per run, averaged over the last %g s; least squares along the axis '
+                'over z/R_d 5.9-25.2 (Fig 4\'s heights); slug: axis voidage at mid-plate '
+                'below 0.6 until above 0.7' % (numbers['time'], numbers['average']))
+    paper = {'Vp': 'falls with height (Fig 4), slugging near u_ms',
+             'h': 'falls with height, lower next to the plates (Fig 12)'}
+    rows, keys = [], []
+    for r in numbers['runs']:
+        note = 'run %s: %s; %s' % (r['run'], r['what'], settings)
+        hours = '%.2f h' % (r['wall_s'] / 3600)
+        lost = '; %d particles lost' % r['lost'] if r['lost'] else ''
+        rows.append(('particle velocity along the spout axis, %s' % r['run'],
+                     'dVp/dz %+.3f 1/s (%+.0f %% of its mean over the heights; halves of the '
+                     'window %+.3f, %+.3f; over the spout\'s width %+.3f); gas %+.2f 1/s, '
+                     'voidage %+.3f 1/m, slip Re %+.0f 1/m; %d slugs (%.2f per s, %.0f %% of '
+                     'the time; axis voidage at mid-plate %.3f)%s'
+                     % (r['dVp_dz'], 100 * r['Vp_change'], r['dVp_dz_halves'][0],
+                        r['dVp_dz_halves'][1], r['dVp_dz_width'], r['dUg_dz'], r['deps_dz'],
+                        r['dRe_dz'], r['slugs'], r['slugs_per_s'], 100 * r['slug_share'],
+                        r['eps_probe'], lost), paper['Vp'], note, hours))
+        keys += [('spout.dVp_dz_' + r['key'], '%.4g' % r['dVp_dz'], '1/s', '< 0', note),
+                 ('spout.slugs_per_s_' + r['key'], '%.3g' % r['slugs_per_s'], '1/s', '', note)]
+        if r['heat']:
+            rows.append(('h along the spout axis and across it, %s' % r['run'],
+                         'dh/dz %+.1f W/m2/K per m; beside the plates / on the axis %.3f '
+                         '(slip Re %.3f)' % (r['dh_dz'], r['h_plate_over_axis'],
+                                             r['Re_plate_over_axis']),
+                         paper['h'], note, hours))
+            keys += [('spout.dh_dz_' + r['key'], '%.4g' % r['dh_dz'], 'W/m2/K/m', '< 0', note),
+                     ('spout.h_plate_over_axis_' + r['key'], '%.4g' % r['h_plate_over_axis'],
+                      '', '< 1', note)]
+    pngs = [('spoutHeight.png', 'spoutheight_axis.png')]
+    return rows, keys, [p for p in pngs if os.path.isfile(os.path.join(case, p[0]))]
+
+
 def mixing_circulation(runs, level):
     """The circulation rate the papers' M = level after 2 s of the 10 000-
     particle bed would need.  The papers' scale has random mixing at 1, ours
@@ -1062,6 +1101,8 @@ SECTIONS = [
     ('friction', 'Circulation rate vs friction at u_ms (section 4.4, eq 16, Fig 7)'),
     ('velocity', 'Circulation rate vs gas velocity (section 4.4, eq 15, Fig 6)'),
     ('profiles', 'Spout and downcomer profiles (sections 4.2-4.3, Figs 4-5)'),
+    ('spoutheight', 'The spout along its height (sections 4.2 and 4.7, Figs 4 and 12; '
+                    'issue 25 item 2)'),
     ('heat', 'Gas-to-particle heat transfer (section 4.7, Figs 11-12)'),
     ('drying', 'Drying: one kernel, and the bed as a dryer at the section 4.7 conditions'),
     ('drytime', 'Drying time: the circulation statistics the long-time predictor takes from '
@@ -1084,6 +1125,8 @@ CSV_HEADER = ['key', 'value', 'unit', 'paper_value', 'note']
 def section_of_key(key):
     if key.startswith(('heat.', 'noplates10k.', 'noplates26k.', 'maps.')):
         return key.split('.')[0]
+    if key.startswith('spout.'):
+        return 'spoutheight'
     if key.startswith('dry.'):
         return 'drying'
     if key.startswith('drytime.'):
@@ -1106,7 +1149,7 @@ def section_of_key(key):
 
 
 FIGURES = {'ums': ('fig2_', 'fig3_'), 'friction': ('fig7_',), 'velocity': ('fig6_',),
-           'profiles': ('fig4_5_',), 'heat': ('fig11_', 'fig12_'), 'drying': ('drying_',),
+           'profiles': ('fig4_5_',), 'spoutheight': ('spoutheight_',), 'heat': ('fig11_', 'fig12_'), 'drying': ('drying_',),
            'drytime': ('drytime_',), 'coarse': ('coarse_',),
            'noplates10k': ('noplates10k_',), 'noplates26k': ('noplates26k_',),
            'maps': ('noplates_maps_',), 'mixing': ('mixing_',), 'mixingcand': ('mixingcand_',),
@@ -1145,7 +1188,8 @@ def coarse_runs_section(coarse, runs, figure_dir):
 
 
 def build(ums, circ, heat, figure_dir, noplates=(), maps=None, mixing=(), drying=None,
-          drytime=None, coarse=(), bed3d=(), coarse_runs=None, mixing_candidates=None):
+          drytime=None, coarse=(), bed3d=(), coarse_runs=None, mixing_candidates=None,
+          spout_height=None):
     """section -> (table rows, results.csv rows, figure names) for the runs given."""
     new = {}
 
@@ -1193,15 +1237,12 @@ def build(ums, circ, heat, figure_dir, noplates=(), maps=None, mixing=(), drying
             pngs = [(f, 'fig4_5_' + f) for f in sorted(os.listdir(circ))
                     if f.startswith('profiles_u') and f.endswith('.png')]
             new['profiles'] = (rows, [], figures('profiles', circ, pngs))
-    if heat:
-        rows, keys, pngs = heat_section(heat)
-        new['heat'] = (rows, keys, figures('heat', heat, pngs))
-    if drying:
-        rows, keys, pngs = drying_section(drying)
-        new['drying'] = (rows, keys, figures('drying', drying, pngs))
-    if drytime:
-        rows, keys, pngs = drytime_section(drytime)
-        new['drytime'] = (rows, keys, figures('drytime', drytime, pngs))
+    for name, case, section in (('spoutheight', spout_height, spout_height_section),
+                                ('heat', heat, heat_section), ('drying', drying, drying_section),
+                                ('drytime', drytime, drytime_section)):
+        if case:        # one case copy, one section
+            rows, keys, pngs = section(case)
+            new[name] = (rows, keys, figures(name, case, pngs))
     for case in noplates:
         name, rows, keys, pngs = noplates_section(case)
         if name not in FIGURES:
@@ -1312,6 +1353,8 @@ def parse(argv):
     p.add_argument('--mixingCandidates', metavar='CANDIDATES_DIR',
                    help='a case copy where protocols/mixing --candidates ran '
                         '(mixingCandidates.json)')
+    p.add_argument('--spoutHeight', metavar='SPOUTHEIGHT_DIR',
+                   help='a case copy where protocols/spoutHeight ran (spoutHeight.json)')
     p.add_argument('--bed3d', action='append', default=[], metavar='UMS3D_DIR',
                    help='a copy of openfoam_cases/spoutedBed3D where protocols/'
                         'minimumSpouting3D ran (repeat for other realisations)')
@@ -1333,7 +1376,7 @@ def main(argv):
                                                 a.mixing)
     if not (cases or heat or noplates or maps or mixing or a.mixingCandidates or a.drying
             or a.dryingTime or a.coarse or a.bed3d or a.coarseCirculation or a.coarseHeat
-            or a.coarseSpeedup or a.bed3dCoarse):
+            or a.coarseSpeedup or a.bed3dCoarse or a.spoutHeight):
         p.print_help()
         return 2
     ums = cases[0] if cases else None
@@ -1341,7 +1384,8 @@ def main(argv):
     new = build(ums, circ, heat, os.path.join(os.path.dirname(out), 'figures'), noplates, maps,
                 mixing, a.drying, a.dryingTime, a.coarse, a.bed3d,
                 {'circulation': a.coarseCirculation, 'heat': a.coarseHeat,
-                 'speedup': a.coarseSpeedup, 'bed3d': a.bed3dCoarse}, a.mixingCandidates)
+                 'speedup': a.coarseSpeedup, 'bed3d': a.bed3dCoarse}, a.mixingCandidates,
+                a.spoutHeight)
     old = old_sections(out)
     lines = ['# SpoutLab vs the source papers', '',
              'Written by `openfoam_cases/spoutDraftPlates/protocols/results` from the protocol',
