@@ -305,7 +305,7 @@ def prepare_case(base, dem, n, steps, velocity, env, ranks=1, grid=(1, 1)):
     for sub in ('system', 'constant', '0.orig'):
         shutil.copytree(os.path.join(CASE, sub), os.path.join(work, sub),
                         ignore=shutil.ignore_patterns('polyMesh'))
-    if tuple(grid) != (1, 1):
+    if grid != (1, 1):
         width, depth = widen_mesh(os.path.join(work, 'system', 'blockMeshDict'), *grid)
         for entry, value in (('W', width), ('L', depth)):
             foam_set(work, env, 'constant/couplingProperties', 'liggghtsVariables.' + entry,
@@ -363,13 +363,13 @@ def widen_mesh(path, copies, rows=1, write=True):
     return values['W'], values['L']
 
 
-def decompose(work, ranks, env, grid=None):
+def decompose(work, ranks, env, grid=(1, 1)):
     """The gas mesh cut for ranks ranks as the case scripts cut it:
     x-slabs (0/C, the cell centres, then etc/caseFunctions' decomposeSlabs)
     unless grid (px, py) has py > 1: then OpenFOAM's simple method in
     px x py boxes (the column's uniform cells make them a grid of boxes).
     spoutFoam hands the same cuts to LIGGGHTS."""
-    if grid and grid[1] > 1:
+    if grid[1] > 1:
         with open(os.path.join(work, 'system', 'decomposeParDict'), 'w') as f:
             f.write('FoamFile { version 2.0; format ascii; class dictionary; '
                     'object decomposeParDict; }\n'

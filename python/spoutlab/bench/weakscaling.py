@@ -11,14 +11,13 @@ runs a few CFD steps at a constant inlet velocity on P ranks. With --grid
 the beds form a grid of Px x Py in x and y instead (rank_grid: 2 x 2,
 4 x 2, ..., 8 x 8), cut by OpenFOAM's simple method into Px x Py boxes of
 one bed each, so that a rank inside the grid has eight neighbours, the four
-diagonal ones included. More ranks than
-cores are oversubscribed: their wall times mean nothing, so the figures are
-what each rank sends and receives per CFD step -- the solver's own count of
-the halo messages and bytes (DemCoupling's last log lines) and the halo
-cells each rank holds. If the exchange is neighbour-to-neighbour, an
-interior rank's figures do not change with P. LIGGGHTS' own ghost-atom
-exchange (a spatial decomposition, neighbour-to-neighbour by design) is not
-counted.
+diagonal ones included. More ranks than cores are oversubscribed: their
+wall times mean nothing, so the figures are what each rank sends and
+receives per CFD step -- the solver's own count of the halo messages and
+bytes (DemCoupling's last log lines) and the halo cells each rank holds. If
+the exchange is neighbour-to-neighbour, an interior rank's figures do not
+change with P. LIGGGHTS' own ghost-atom exchange (a spatial decomposition,
+neighbour-to-neighbour by design) is not counted.
 
     bench/weakScaling                          # 1 2 4 8 16 32 64 ranks
     bench/weakScaling --ranks 1 2 4 --steps 5
@@ -82,7 +81,8 @@ def rank_grid(ranks, grid=False):
 def interior_ranks(grid):
     """The ranks with a neighbour on both sides in every direction the grid
     is cut, numbered as OpenFOAM's simple method numbers its boxes (x
-    fastest: rank i + Px j for the box (i, j)); none if there are none."""
+    fastest: rank i + Px j for the box (i, j), as the halo cells of 4 x 4 and
+    8 x 4 runs show; decomposeSlabs' x-slabs likewise); none if none is."""
     px, py = grid
     inner = lambda k, n: n == 1 or 0 < k < n - 1
     return [i + px * j for j in range(py) for i in range(px) if inner(i, px) and inner(j, py)]
@@ -140,8 +140,8 @@ def options(argv=None):
     p.add_argument('--steps', type=int, default=10, metavar='S',
                    help='CFD steps per run (default 10)')
     p.add_argument('--grid', action='store_true',
-                   help='the beds in a grid of Px x Py ranks in x and y (rank_grid) '
-                        'instead of one row of x-slabs')
+                   help='the beds in a grid of ranks in x and y, as square as the rank '
+                        'count allows (2x2, 4x2, ..., 8x8), instead of one row of x-slabs')
     p.add_argument('--velocity', type=float, default=2.5, metavar='U',
                    help='superficial inlet velocity [m/s] (default 2.5: bubbling)')
     p.add_argument('--dir', metavar='DIR',
