@@ -129,7 +129,9 @@ class WeakScaling(unittest.TestCase):
         self.tmp.cleanup()
 
     def test_widening_keeps_the_cell_size(self):
-        self.assertAlmostEqual(co.widen_mesh(self.mesh, 64), 64 * 0.12, places=12)
+        width, depth = co.widen_mesh(self.mesh, 64)
+        self.assertAlmostEqual(width, 64 * 0.12, places=12)
+        self.assertAlmostEqual(depth, 0.04, places=12)
         text = open(self.mesh).read()
         self.assertRegex(text, r'(?m)^W\s+7\.68;')
         self.assertRegex(text, r'(?m)^nx\s+384;')
@@ -137,9 +139,31 @@ class WeakScaling(unittest.TestCase):
         strip = lambda t: [l for l in t.splitlines() if not l.startswith(('W ', 'nx '))]
         self.assertEqual(strip(text), strip(self.original))
 
+    def test_widening_in_x_and_y(self):
+        width, depth = co.widen_mesh(self.mesh, 8, 4)
+        self.assertAlmostEqual(width, 0.96, places=12)
+        self.assertAlmostEqual(depth, 0.16, places=12)
+        text = open(self.mesh).read()
+        for entry, value in (('W', '0.96'), ('nx', '48'), ('L', '0.16'), ('ny', '8')):
+            self.assertRegex(text, r'(?m)^%s\s+%s;' % (entry, value.replace('.', r'\.')))
+
     def test_widening_without_writing(self):
-        self.assertAlmostEqual(co.widen_mesh(self.mesh, 4, write=False), 0.48, places=12)
+        self.assertAlmostEqual(co.widen_mesh(self.mesh, 4, 2, write=False)[0], 0.48, places=12)
         self.assertEqual(open(self.mesh).read(), self.original)
+
+    def test_grids_of_ranks(self):
+        self.assertEqual([weak.rank_grid(p, grid=True) for p in (1, 2, 4, 8, 16, 32, 64)],
+                         [(1, 1), (2, 1), (2, 2), (4, 2), (4, 4), (8, 4), (8, 8)])
+        self.assertEqual(weak.rank_grid(12, grid=True), (4, 3))
+        self.assertEqual(weak.rank_grid(7, grid=True), (7, 1))     # a prime: one row
+        self.assertEqual(weak.rank_grid(16), (16, 1))              # without --grid: x-slabs
+
+    def test_interior_ranks(self):
+        self.assertEqual(weak.interior_ranks((4, 1)), [1, 2])
+        self.assertEqual(weak.interior_ranks((4, 4)), [5, 6, 9, 10])   # x fastest
+        self.assertEqual(weak.interior_ranks((4, 2)), [])
+        self.assertEqual(weak.interior_ranks((2, 1)), [])
+        self.assertEqual(len(weak.interior_ranks((8, 8))), 36)
 
     def test_widening_needs_the_entries(self):
         with open(self.mesh, 'w') as f:
@@ -158,7 +182,7 @@ class WeakScaling(unittest.TestCase):
         cells, traffic = weak.exchange(log)
         self.assertEqual(cells, [80, 160, 160, 80])
         self.assertEqual(traffic, [(7.2, 13.5), (14.4, 27.0), (14.6, 27.5), (7.0, 15.0)])
-        row = weak.summary(4, cells, traffic)
+        row = weak.summary((4, 1), cells, traffic)
         self.assertEqual(row['halo_cells_max'], 160)
         self.assertAlmostEqual(row['messages_interior'], 14.5)   # ranks 1 and 2
         self.assertAlmostEqual(row['kB_interior'], 27.25)
@@ -169,9 +193,19 @@ class WeakScaling(unittest.TestCase):
         log = os.path.join(self.tmp.name, 'log.spoutFoam')
         with open(log, 'w') as f:
             f.write('Time = 0.0015\nEnd\n')
-        row = weak.summary(1, *weak.exchange(log))
+        row = weak.summary((1, 1), *weak.exchange(log))
         self.assertEqual((row['halo_cells_max'], row['messages_max'], row['kB_max']),
                          (0, 0.0, 0.0))
+        self.assertIsNone(row['messages_interior'])
+
+    def test_interior_of_a_grid(self):
+        # 3 x 3 boxes: rank 4 alone has all eight neighbours
+        traffic = [(19.8, 55.7), (33.0, 74.2), (19.8, 55.7), (33.0, 99.0), (52.8, 123.8),
+                   (33.0, 99.0), (19.8, 55.7), (33.0, 74.2), (19.8, 55.7)]
+        row = weak.summary((3, 3), [360, 480, 360, 640, 800, 640, 360, 480, 360], traffic)
+        self.assertEqual(row['halo_cells_max'], 800)
+        self.assertEqual((row['messages_interior'], row['kB_interior']), (52.8, 123.8))
+        self.assertIsNone(weak.summary((2, 2), [360] * 4, traffic[:4])['kB_interior'])
 
 
 if __name__ == '__main__':

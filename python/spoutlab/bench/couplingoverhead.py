@@ -293,10 +293,11 @@ def dem_alone(base, dem, dem_steps, chunk, env, ranks=1):
 
 # ------------------------------------------------------------------ coupled
 
-def prepare_case(base, dem, n, steps, velocity, env, ranks=1, copies=1):
-    """The coupled case in base/coupled; copies > 1 widens the column to
-    that many columns side by side (bench/weakScaling: dem then holds the
-    widened bed of n particles)."""
+def prepare_case(base, dem, n, steps, velocity, env, ranks=1, grid=(1, 1)):
+    """The coupled case in base/coupled; a grid (px, py) other than (1, 1)
+    widens the column to px columns side by side and py rows of them
+    (bench/weakScaling: dem then holds the widened bed of n particles) and
+    on ranks > 1 cuts it as decompose does."""
     work = os.path.join(base, 'coupled')
     shutil.rmtree(work, ignore_errors=True)
     os.makedirs(work)
@@ -304,10 +305,11 @@ def prepare_case(base, dem, n, steps, velocity, env, ranks=1, copies=1):
     for sub in ('system', 'constant', '0.orig'):
         shutil.copytree(os.path.join(CASE, sub), os.path.join(work, sub),
                         ignore=shutil.ignore_patterns('polyMesh'))
-    if copies > 1:
-        width = widen_mesh(os.path.join(work, 'system', 'blockMeshDict'), copies)
-        foam_set(work, env, 'constant/couplingProperties', 'liggghtsVariables.W',
-                 '%.12g' % width)
+    if grid != (1, 1):
+        width, depth = widen_mesh(os.path.join(work, 'system', 'blockMeshDict'), *grid)
+        for entry, value in (('W', width), ('L', depth)):
+            foam_set(work, env, 'constant/couplingProperties', 'liggghtsVariables.' + entry,
+                     '%.12g' % value)
     shutil.copytree(os.path.join(work, '0.orig'), os.path.join(work, '0'))
     os.makedirs(os.path.join(work, 'DEM'))
     shutil.copy(os.path.join(dem, 'settled.restart'), os.path.join(work, 'DEM'))
@@ -325,7 +327,7 @@ def prepare_case(base, dem, n, steps, velocity, env, ranks=1, copies=1):
                             'couplingInterval'))
     run(['blockMesh'], work, env, 'log.blockMesh', 'blockMesh')
     if ranks > 1:
-        decompose(work, ranks, env)
+        decompose(work, ranks, env, grid)
     cells = None
     with open(os.path.join(work, 'log.blockMesh')) as f:
         m = re.search(r'nCells:\s*(\d+)', f.read())
@@ -334,18 +336,20 @@ def prepare_case(base, dem, n, steps, velocity, env, ranks=1, copies=1):
     return work, delta_t, interval, cells, n_corr
 
 
-def widen_mesh(path, copies, write=True):
-    """blockMeshDict's W and nx times copies: that many columns side by side
-    (the cells keep their size). Returns the new width W [m]; write=False
-    leaves the file as it is. (foamDictionary would expand the $W of the
-    vertices while rewriting the file.)"""
+def widen_mesh(path, copies, rows=1, write=True):
+    """blockMeshDict's W and nx times copies, L and ny times rows: that many
+    columns side by side in x and rows of them in y (the cells keep their
+    size). Returns the new width W and depth L [m]; write=False leaves the
+    file as it is. (foamDictionary would expand the $W of the vertices
+    while rewriting the file.)"""
     text = open(path).read()
     values = {}
-    for entry in ('W', 'nx'):
+    for entry, factor, kind in (('W', copies, float), ('nx', copies, int),
+                                ('L', rows, float), ('ny', rows, int)):
         pattern = re.compile(r'^(%s\s+)([^;]*);' % entry, re.M)
         found = pattern.findall(text)
         try:
-            values[entry] = copies * (float(found[0][1]) if entry == 'W' else int(found[0][1]))
+            values[entry] = factor * kind(found[0][1])
         except (IndexError, ValueError):
             raise BenchError('%s: expected one top-level entry %s with a number, found %s'
                              % (path, entry, found or 'none'))
@@ -356,13 +360,24 @@ def widen_mesh(path, copies, write=True):
     if write:
         with open(path, 'w') as f:
             f.write(text)
-    return values['W']
+    return values['W'], values['L']
 
 
-def decompose(work, ranks, env):
-    """The gas mesh in ranks x-slabs as the case scripts cut it: 0/C (cell
-    centres), then etc/caseFunctions' decomposeSlabs, whose cut planes
-    spoutFoam hands to LIGGGHTS."""
+def decompose(work, ranks, env, grid=(1, 1)):
+    """The gas mesh cut for ranks ranks as the case scripts cut it:
+    x-slabs (0/C, the cell centres, then etc/caseFunctions' decomposeSlabs)
+    unless grid (px, py) has py > 1: then OpenFOAM's simple method in
+    px x py boxes (the column's uniform cells make them a grid of boxes).
+    spoutFoam hands the same cuts to LIGGGHTS."""
+    if grid[1] > 1:
+        with open(os.path.join(work, 'system', 'decomposeParDict'), 'w') as f:
+            f.write('FoamFile { version 2.0; format ascii; class dictionary; '
+                    'object decomposeParDict; }\n'
+                    '// written by bench/weakScaling: %d x %d boxes in x and y\n'
+                    'numberOfSubdomains %d;\nmethod simple;\ncoeffs { n (%d %d 1); }\n'
+                    % (grid[0], grid[1], ranks, grid[0], grid[1]))
+        run(['decomposePar'], work, env, 'log.decomposePar', 'decomposePar')
+        return
     run(['postProcess', '-func', 'writeCellCentres', '-time', '0'], work, env,
         'log.postProcess', 'postProcess -func writeCellCentres')
     run(['bash', '-c', '. "$1/etc/caseFunctions" && decomposeSlabs "$2"',
