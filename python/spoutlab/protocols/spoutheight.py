@@ -342,6 +342,26 @@ unset multiplot
 ''' % (len(panels), '\n'.join(panels)), size=(1000, 300 * len(panels)))
 
 
+def plot_across(a):
+    """spoutHeight_<run>.png: the particle velocity, and h (or the voidage
+    without heat) across the spout, one line per height of Fig 4."""
+    panels = []
+    for n, label, col in [PLOTS[0], PLOTS[4] if a['heat'] else PLOTS[2]]:
+        panels.append('set ylabel "%s"\nplot %s' % (label, ', '.join(
+            '"spoutHeight.csv" skip 1 using (strcol(3) eq "across" && strcol(1) eq "%s" && '
+            'abs($4 - %.3f) < 1e-3 ? $5 : 1/0):%d with linespoints lw 2 title "z/R_d %.1f"'
+            % (a['run'], h, col, h) for h, _ in a['across'])))
+    return sc.plot('spoutHeight_%s.png' % a['run'], '''
+set multiplot layout 2,1 title "Across the spout, %s (draft plates at x/R_d = +-1)"
+set grid
+set datafile separator ","
+set xlabel "x/R_d"
+set key outside right
+%s
+unset multiplot
+''' % (a['run'], '\n'.join(panels)), size=(1000, 700))
+
+
 KEPT = ('run', 'key', 'what', 'u_m_s', 'samples', 'heat', 'dVp_dz', 'dVp_dz_halves',
         'dVp_dz_width', 'dUg_dz', 'deps_dz', 'dRe_dz',
         'dh_dz', 'Vp_change', 'h_plate_over_axis', 'Re_plate_over_axis', 'slugs',
@@ -372,7 +392,8 @@ def report(analysed, o):
                     % (a['Re_plate_over_axis'], a['slugs'], a['slugs_per_s'],
                        100 * a['slug_share'], a['eps_probe']))
     write_csv(analysed)
-    text += ['', 'data: spoutHeight.csv; plot: ' + sc.plots_text([plot(analysed)])]
+    plots = [plot(analysed)] + [plot_across(a) for a in analysed]
+    text += ['', 'data: spoutHeight.csv; plots: ' + sc.plots_text(plots)]
     out = '\n'.join(text) + '\n'
     sys.stdout.write(out)
     open('spoutHeight.txt', 'w').write(out)
