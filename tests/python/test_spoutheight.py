@@ -65,7 +65,8 @@ class MadeUpRun(unittest.TestCase):
         write_field(os.path.join(last, 'voidfractionMean'), [0.6] * len(self.cells))
         # write times: 0.5 before the window (wild), 1, 1.5 and 2 in it; gas
         # 10 m/s up, particles 4 m/s up at voidage 0.75; h 100 on the axis,
-        # 80 elsewhere; at t = 1 the axis cell at z = 300 mm is empty
+        # 80 off it (60 in the row z = 100 mm); at t = 1 the axis cell at
+        # z = 300 mm is empty
         for t in ('0.5', '1', '1.5', '2'):
             early = t == '0.5'
             write_field(os.path.join(self.case, t, 'U'), [(0.0, 0.0, 10.0)] * len(self.cells))
@@ -76,7 +77,8 @@ class MadeUpRun(unittest.TestCase):
                 0.0 if (t == '1' and x == 0 and abs(z - 0.3) < 1e-9) else 0.25
                 for x, _, z in self.cells])
             write_field(os.path.join(self.case, t, 'hp'), [
-                wild if early else (100.0 if x == 0 else 80.0) for x, _, z in self.cells])
+                wild if early else 100.0 if x == 0 else 60.0 if abs(z - 0.1) < 1e-9 else 80.0
+                for x, _, z in self.cells])
         probe = os.path.join(self.case, 'postProcessing', 'spoutFlux', '0')
         os.makedirs(probe)
         series = [0.9, 0.8, 0.55, 0.65, 0.58, 0.75, 0.8, 0.5, 0.72, 0.9]
@@ -122,7 +124,11 @@ class MadeUpRun(unittest.TestCase):
         self.assertAlmostEqual(sh.axis_slope(axis, 'h', 0.0, 1.0), 0.0, places=9)
         across = sh.paper_rows(g, cells)
         self.assertEqual(len(across), 8)
-        self.assertAlmostEqual(sh.plate_over_axis(g, across, 'h'), 0.8, places=12)
+        # Fig 4's heights fall on the rows 100, 300 (3 times), 500 (twice) and 700
+        # mm (twice); Fig 12's band on 500, 500 and 700, clear of the 60 at 100
+        self.assertAlmostEqual(sh.plate_over_axis(g, across, 'h'), 0.775, places=12)
+        self.assertAlmostEqual(sh.plate_over_axis(g, across, 'h', (16.927, 22.454)), 0.8,
+                               places=12)
         self.assertAlmostEqual(sh.plate_over_axis(g, across, 'Re'), 1.0, places=12)
         for _, cols in across:
             beside = sh.pooled(cols, [x for x in cols if sh.by_plate(g, x)])
@@ -165,7 +171,7 @@ class ResultsSection(unittest.TestCase):
                    'slugs_per_s': 1.0, 'slug_share': 0.1, 'eps_probe': 0.8, 'lost': 0,
                    'wall_s': 600}
             hot = dict(run, run='u2_hot', key='2.0', heat=True, dh_dz=-12.5,
-                       h_plate_over_axis=0.85, lost=4)
+                       h_plate_over_axis=0.85, h_plate_over_axis_all=0.9, lost=4)
             with open(os.path.join(case, 'spoutHeight.json'), 'w') as f:
                 json.dump({'time': 5, 'average': 3, 'runs': [run, hot]}, f)
             rows, keys, _ = results.spout_height_section(case)

@@ -681,9 +681,10 @@ def spout_height_section(case):
                  ('spout.slugs_per_s_' + r['key'], '%.3g' % r['slugs_per_s'], '1/s', '', note)]
         if r['heat']:
             rows.append(('h along the spout axis and across it, %s' % r['run'],
-                         'dh/dz %+.1f W/m2/K per m; beside the plates / on the axis %.3f '
-                         '(slip Re %.3f)' % (r['dh_dz'], r['h_plate_over_axis'],
-                                             r['Re_plate_over_axis']),
+                         'dh/dz %+.1f W/m2/K per m; beside the plates / on the axis %.3f over '
+                         'Fig 12\'s z/R_d 16.9-22.5 (slip Re %.3f), %.3f over all Fig 4\'s '
+                         'heights' % (r['dh_dz'], r['h_plate_over_axis'],
+                                      r['Re_plate_over_axis'], r['h_plate_over_axis_all']),
                          paper['h'], note, hours))
             keys += [('spout.dh_dz_' + r['key'], '%.4g' % r['dh_dz'], 'W/m2/K/m', '< 0', note),
                      ('spout.h_plate_over_axis_' + r['key'], '%.4g' % r['h_plate_over_axis'],

@@ -37,6 +37,7 @@ from spoutlab import cli
 from spoutlab import foamfile
 from spoutlab import profilefeatures
 from spoutlab import spoutedbed
+from spoutlab import spoutheat
 from spoutlab.protocols import circulation
 from spoutlab.protocols import results
 
@@ -228,9 +229,10 @@ def axis_slope(rows, name, lo, hi):
     return profilefeatures.slope([p[0] for p in pts], [p[1] for p in pts])
 
 
-def plate_over_axis(g, across, name):
+def plate_over_axis(g, across, name, band=(0, math.inf)):
     """The quantity in the columns beside the plates over its value on the
-    axis, each averaged over the paper's heights."""
+    axis, each averaged over the paper's heights within band (z/R_d)."""
+    across = [(h, cols) for h, cols in across if band[0] - 1e-6 <= h <= band[1] + 1e-6]
     plate = pooled_columns(g, across, name, lambda x: by_plate(g, x))
     axis = pooled_columns(g, across, name, lambda x: on_axis(g, x))
     return plate / axis if axis else float('nan')
@@ -296,8 +298,9 @@ def analyse(o, r):
             'dRe_dz': fit['Re'], 'dh_dz': fit['h'], 'dVp_dz_halves': halves,
             'dVp_dz_width': across_width,
             'Vp_change': fit['Vp'] * (hi - lo) / (sum(band) / len(band)),
-            'h_plate_over_axis': plate_over_axis(g, across, 'h'),
-            'Re_plate_over_axis': plate_over_axis(g, across, 'Re'),
+            'h_plate_over_axis': plate_over_axis(g, across, 'h', spoutheat.BAND),
+            'h_plate_over_axis_all': plate_over_axis(g, across, 'h'),
+            'Re_plate_over_axis': plate_over_axis(g, across, 'Re', spoutheat.BAND),
             'slugs': count, 'slugs_per_s': rate, 'slug_share': share,
             'eps_probe': eps_probe, 'lost': lost_particles(work),
             'wall_s': results.wall_time(work)}
@@ -330,7 +333,8 @@ def plot(analysed):
         if runs:
             panels.append('set ylabel "%s"\nplot %s' % (label, ', '.join(
                 '"spoutHeight.csv" skip 1 using (strcol(3) eq "axis" && strcol(1) eq "%s" '
-                '? $4 : 1/0):%d with lines lw 2 title "%s"' % (r, col, r) for r in runs)))
+                '? $4 : 1/0):%d with lines lw 2 title "%s" noenhanced' % (r, col, r)
+                for r in runs)))
     return sc.plot('spoutHeight.png', '''
 set multiplot layout %d,1 title "Time-averaged along the spout axis (plates from He to Hd)"
 set grid
@@ -359,12 +363,13 @@ set xlabel "x/R_d"
 set key outside right
 %s
 unset multiplot
-''' % (a['run'], '\n'.join(panels)), size=(1000, 700))
+''' % (a['run'].replace('_', '\\\\_'), '\n'.join(panels)), size=(1000, 700))
 
 
 KEPT = ('run', 'key', 'what', 'u_m_s', 'samples', 'heat', 'dVp_dz', 'dVp_dz_halves',
         'dVp_dz_width', 'dUg_dz', 'deps_dz', 'dRe_dz',
-        'dh_dz', 'Vp_change', 'h_plate_over_axis', 'Re_plate_over_axis', 'slugs',
+        'dh_dz', 'Vp_change', 'h_plate_over_axis', 'h_plate_over_axis_all',
+        'Re_plate_over_axis', 'slugs',
         'slugs_per_s', 'slug_share', 'eps_probe', 'lost', 'wall_s')
 
 
@@ -385,9 +390,12 @@ def report(analysed, o):
                     a['dVp_dz_halves'][1], a['dVp_dz_width'], a['dUg_dz'], a['deps_dz'],
                     a['dRe_dz'])]
         if a['heat']:
-            text.append('  h: dh/dz %+.1f W/m2/K per m; beside the plates / on the axis %.3f'
-                        % (a['dh_dz'], a['h_plate_over_axis']))
-        text.append('  slip Re beside the plates / on the axis %.3f; %d slugs (%.2f per s), '
+            text.append('  h: dh/dz %+.1f W/m2/K per m; beside the plates / on the axis %.3f '
+                        'over Fig 12\'s z/R_d %g-%g, %.3f over all Fig 4\'s heights'
+                        % ((a['dh_dz'], a['h_plate_over_axis']) + spoutheat.BAND
+                           + (a['h_plate_over_axis_all'],)))
+        text.append('  slip Re beside the plates / on the axis %.3f (Fig 12\'s heights); '
+                    '%d slugs (%.2f per s), '
                     '%.0f %% of the time; mean axis voidage at mid-plate %.3f'
                     % (a['Re_plate_over_axis'], a['slugs'], a['slugs_per_s'],
                        100 * a['slug_share'], a['eps_probe']))
