@@ -689,7 +689,10 @@ def spout_height_section(case):
             keys += [('spout.dh_dz_' + r['key'], '%.4g' % r['dh_dz'], 'W/m2/K/m', '< 0', note),
                      ('spout.h_plate_over_axis_' + r['key'], '%.4g' % r['h_plate_over_axis'],
                       '', '< 1', note)]
-    pngs = [('spoutHeight.png', 'spoutheight_axis.png')]
+    # along the axis, every run; across the spout, the paper's two points
+    pngs = [('spoutHeight.png', 'spoutheight_axis.png')] + [
+        ('spoutHeight_%s.png' % run, 'spoutheight_across_%s.png' % run)
+        for run in ('u1.4', 'u2_hot')]
     return rows, keys, [p for p in pngs if os.path.isfile(os.path.join(case, p[0]))]
 
 
