@@ -279,6 +279,9 @@ def analyse(o, r):
     work = os.path.join('runs', 'height_' + r.name)
     g = spoutedbed.load(work)
     names = window_times(work, o['average'])
+    if len(names) < 2:
+        sys.exit('spoutHeight: %s: %d write time(s) in the last %g s: the window needs two or '
+                 'more (--write well under --average)' % (work, len(names), o['average']))
     cells = cell_sums(work, g, names)
     axis = axis_rows(g, cells)
     across = paper_rows(g, cells)
