@@ -285,13 +285,18 @@ def read_field(path):
     return values
 
 
-def latest_time(case='.'):
-    """The newest time directory of a case (as its name)."""
+def time_dirs(case='.'):
+    """[(time, name as written)] of a case's time directories, oldest first."""
     times = []
     for name in os.listdir(case):
         try:
-            if name != '0.orig' and os.path.isdir(os.path.join(case, name)):
+            if os.path.isdir(os.path.join(case, name)):
                 times.append((float(name), name))
         except ValueError:
-            pass
-    return max(times)[1]
+            pass      # not a time (0.orig, constant, system, ...)
+    return sorted(times)
+
+
+def latest_time(case='.'):
+    """The newest time directory of a case (as its name)."""
+    return time_dirs(case)[-1][1]

@@ -128,14 +128,9 @@ def by_plate(g, x):
 
 def window_times(case, average):
     """Names of the write times (t > 0) in the last `average` seconds."""
-    times = []
-    for name in os.listdir(case):
-        try:
-            times.append((float(name), name))
-        except ValueError:
-            pass
-    end = max(t for t, _ in times)
-    return [n for t, n in sorted(times) if t >= end - average - 1e-9 and t > 0]
+    times = foamfile.time_dirs(case)
+    end = times[-1][0]
+    return [n for t, n in times if t >= end - average - 1e-9 and t > 0]
 
 
 class Sums:
