@@ -385,6 +385,35 @@ class Candidates(unittest.TestCase):
             circulation.set_entries(path, [('dragLaw', 'DiFelice')])
         self.assertIn("expected one top-level entry 'dragLaw', found 0", str(stop.exception.code))
 
+    def test_a_point_with_entries_takes_the_bed_settled_for_its_overrides(self):
+        """run_point's entries do not change the settled bed: a point that sets
+        one starts from the bed another point settled with its overrides
+        (the entry's name once took the place of the bed's key)."""
+        from unittest import mock
+        from spoutlab.protocols import circulation
+        here = os.getcwd()
+        os.chdir(self.case)
+        try:
+            os.makedirs('0.orig')
+            os.makedirs('constant')
+            with open('constant/couplingProperties', 'w') as f:
+                f.write('dragModel Gidaspow;\n')
+            os.makedirs('elsewhere')
+            with open('elsewhere/settled.restart', 'w') as f:
+                f.write('the bed\n')
+            o = {'overrides': [], 'n': '1500', 'kick': '2.0,1.0', 'time': 1, 'average': 0.5,
+                 'np': 1}
+            settled = {circulation.settle_key(o, ['mu=0.1']): 'elsewhere/settled.restart'}
+            with mock.patch('subprocess.call', return_value=0):
+                work = circulation.run_point(o, 'p', 1.4, ['mu=0.1'], settled,
+                                             [('constant/couplingProperties', 'dragModel',
+                                               'DiFelice')])
+            with open(os.path.join(work, 'DEM', 'settled.restart')) as f:
+                self.assertEqual(f.read(), 'the bed\n')
+            self.assertEqual(list(settled), [circulation.settle_key(o, ['mu=0.1'])])
+        finally:
+            os.chdir(here)
+
 
 if __name__ == '__main__':
     unittest.main()

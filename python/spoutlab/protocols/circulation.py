@@ -97,16 +97,17 @@ def settle_key(o, overrides):
     return tuple(sorted(o['overrides'] + overrides + [o['n'] or '']))
 
 
-def run_all(o, pts):
-    """Run the points, --jobs at a time: first one point per settled bed,
-    then the rest, which reuse those beds."""
+def run_all(o, pts, entries=lambda p: ()):
+    """Run the points (label, u_s, overrides, ...), --jobs at a time: first
+    one point per settled bed, then the rest, which reuse those beds;
+    entries(point), run_point's entries of each."""
     settled, first = {}, {}
     for p in pts:
         first.setdefault(settle_key(o, p[2]), p)
     rest = [p for p in pts if p not in first.values()]
     with concurrent.futures.ThreadPoolExecutor(o['jobs']) as pool:
         for batch in (list(first.values()), rest):
-            list(pool.map(lambda p: run_point(o, p[0], p[1], p[2], settled), batch))
+            list(pool.map(lambda p: run_point(o, p[0], p[1], p[2], settled, entries(p)), batch))
 
 
 def run_point(o, label, u, overrides, settled, entries=()):
@@ -130,8 +131,8 @@ def run_point(o, label, u, overrides, settled, entries=()):
             'runs', 'processor*', 'DEM', 'particles', 'postProcessing', 'log.*',
             '[0-9]*', '*.png', '*.csv'), symlinks=True)
         shutil.copytree('0.orig', os.path.join(work, '0.orig'), dirs_exist_ok=True)
-    for path, key, value in entries:
-        set_entries(os.path.join(work, path), [(key, value)])
+    for path, entry, value in entries:
+        set_entries(os.path.join(work, path), [(entry, value)])
     if key in settled and os.path.isfile(settled[key]) and not os.path.isfile(bed):
         os.makedirs(os.path.dirname(bed), exist_ok=True)
         shutil.copy(settled[key], bed)

@@ -13,19 +13,21 @@ inner faces, He < z < Hd) and per column across it:
   gas velocity        mean interstitial U, every time step
   voidage             mean voidage, every time step
   slip Re             eps rho |U - Us| d / mu from each write time's cell
-                      fields, averaged over the cells that hold particles
-  h                   the heat coupling's cell h (runs with heat only)
+                      fields, weighted by the cell's solid fraction then
+  h                   the heat coupling's cell h, weighted alike (runs
+                      with heat only)
 and the slugs: the axis probe at mid-plate height (every 5 steps) counts
 a slug each time the voidage there falls below SLUG_VOIDAGE and rises
 back above it.
 
 Results: spoutHeight.csv (every run, row and column), spoutHeight.txt
 (slopes along the height, h beside the plates over h on the axis, slugs),
-spoutHeight_<quantity>.png, and spoutHeight.json (read by protocols/results).
+spoutHeight.png (along the axis, every run), spoutHeight_<run>.png (across
+the spout at Fig 4's heights), and spoutHeight.json (read by
+protocols/results).
 """
 import argparse
 import collections
-import concurrent.futures
 import json
 import math
 import os
@@ -88,20 +90,11 @@ def parse(argv):
 
 
 def run_all(o, runs):
-    """Every run, --jobs at a time, those sharing a settled bed after the
-    first of them (circulation.run_point keeps finished runs)."""
-    settled, first = {}, {}
-    for r in runs:
-        first.setdefault(circulation.settle_key(o, r.overrides), r)
-    rest = [r for r in runs if r not in first.values()]
+    """Every run as a point of circulation's (finished runs are kept), the
+    fields written every --write seconds."""
     write = [('system/controlDict', 'writeInterval', '%g' % o['write'])]
-
-    def one(r):
-        circulation.run_point(o, 'height_' + r.name, r.u, r.overrides, settled,
-                              r.entries + write)
-    with concurrent.futures.ThreadPoolExecutor(o['jobs']) as pool:
-        for batch in (list(first.values()), rest):
-            list(pool.map(one, batch))
+    circulation.run_all(o, [('height_' + r.name, r.u, r.overrides, r) for r in runs],
+                        lambda p: p[3].entries + write)
 
 
 def spout_cells(g, centres):
