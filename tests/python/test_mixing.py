@@ -381,6 +381,17 @@ class Candidates(unittest.TestCase):
         for _ in range(2):   # a resumed run sets it again
             circulation.set_entries(path, [('dragModel', 'DiFelice')])
         self.assertIsInstance(draglaws.from_coupling_properties(path), draglaws.DiFelice)
+        # a key of a sub-dictionary, and not a key of the same name elsewhere
+        with open(path, 'a') as f:
+            f.write('switch sharp;\n')
+        circulation.set_entries(path, [('GidaspowProps/switch', 'smooth')])
+        text = open(path).read()
+        self.assertIn('GidaspowProps { switch smooth; }', text)
+        self.assertIn('\nswitch sharp;\n', text)
+        with self.assertRaises(SystemExit) as stop:
+            circulation.set_entries(path, [('DiFeliceProps/switch', 'smooth')])
+        self.assertIn("expected a top-level sub-dictionary 'DiFeliceProps'",
+                      str(stop.exception.code))
         with self.assertRaises(SystemExit) as stop:
             circulation.set_entries(path, [('dragLaw', 'DiFelice')])
         self.assertIn("expected one top-level entry 'dragLaw', found 0", str(stop.exception.code))
