@@ -33,6 +33,7 @@ import re
 import sys
 
 from spoutlab import casefiles
+from spoutlab import foamfile
 from spoutlab.bench import spoutbench
 
 
@@ -78,7 +79,7 @@ def main(argv=None):
     os.makedirs(args.dir, exist_ok=True)
     settled = spoutbench.settled_bed(args.dir, args.particles)
     source = spoutbench.developed(settled, args.dir, args.develop)
-    start = spoutbench.latest_time(source)
+    start = foamfile.latest_time(source)
     dp, dt = geometry(source)
     vmax = largest_speed(source, start)
     rows = []

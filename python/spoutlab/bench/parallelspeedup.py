@@ -25,6 +25,7 @@ import os
 import re
 import sys
 
+from spoutlab import foamfile
 from spoutlab.bench import spoutbench
 
 
@@ -78,7 +79,7 @@ def main(argv=None):
     windows = [('from the settled bed', settled, None, 0.0, 'np%d')]
     if args.develop > 0:
         source = spoutbench.developed(settled, args.dir, args.develop)
-        start = spoutbench.latest_time(source)
+        start = foamfile.latest_time(source)
         windows.append(('the developed spout, from %s s' % start, source, start, float(start),
                         'developed-np%d'))
     for what, source, start, t0, name in windows:

@@ -35,6 +35,7 @@ import time
 
 import numpy as np
 
+from spoutlab import foamfile
 from spoutlab import bedlayers, bench, draglaws
 from spoutlab.bench import couplingoverhead as co  # the environment, process and settling helpers
 
@@ -502,13 +503,7 @@ def bed_change(before, after, spout_case):
 def last_time_dir(case, end_time):
     """The time directory a run wrote at its end (the last step lands within
     round-off of endTime and is named as it fell), or None."""
-    times = []
-    for name in os.listdir(case):
-        try:
-            times.append((float(name), name))
-        except ValueError:
-            pass
-    last = max(times)
+    last = foamfile.time_dirs(case)[-1]
     return os.path.join(case, last[1]) if last[0] > end_time - 1e-3 else None
 
 

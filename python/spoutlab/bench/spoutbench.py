@@ -93,17 +93,6 @@ def run(source, base, ranks, end, name=None, start=None, variables=None, write=F
     return case
 
 
-def latest_time(case):
-    """The latest written time directory's name."""
-    times = []
-    for d in os.listdir(case):
-        try:
-            times.append((float(d), d))
-        except ValueError:
-            pass
-    return max(times)[1]
-
-
 def per_simulated_second(log, clock='ClockTime'):
     """Seconds of OpenFOAM's ClockTime (wall) or ExecutionTime (CPU) per
     simulated second, between the first and the last step, so start-up is
