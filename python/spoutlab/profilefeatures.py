@@ -12,6 +12,26 @@ def slope(xs, ys):
     return sum((x - mx) * (y - my) for x, y in zip(xs, ys)) / sxx if sxx > 0 else 0.0
 
 
+def weighted_slope(xs, ys, sigmas):
+    """(slope, its standard error, reduced chi-square) of the straight line
+    through (xs, ys) weighted by 1/sigma^2, sigma each y's standard error.
+    The error is the one the sigmas alone give, sqrt(1 / sum w (x - xw)^2),
+    times sqrt(chi-square / (n - 2)) when the points scatter about the line
+    more than their errors allow (the line does not fit them as well as
+    they are known); chi-square is None with two points."""
+    w = [1 / s ** 2 for s in sigmas]
+    sw = sum(w)
+    mx = sum(wi * x for wi, x in zip(w, xs)) / sw
+    my = sum(wi * y for wi, y in zip(w, ys)) / sw
+    sxx = sum(wi * (x - mx) ** 2 for wi, x in zip(w, xs))
+    b = sum(wi * (x - mx) * (y - my) for wi, x, y in zip(w, xs, ys)) / sxx
+    error = (1 / sxx) ** 0.5
+    if len(xs) < 3:
+        return b, error, None
+    chi2 = sum(wi * (y - my - b * (x - mx)) ** 2 for wi, x, y in zip(w, xs, ys)) / (len(xs) - 2)
+    return b, error * max(1.0, chi2) ** 0.5, chi2
+
+
 # z/R_d of the paper's profiles across the spout and the downcomers (Fig 4)
 HEIGHTS = [5.873, 8.637, 11.400, 14.164, 16.927, 19.691, 22.454, 25.218]
 WALL_BAND = 2.0     # 'next to the walls' in Fig 5: within 2 R_d (55 mm, 7 d_p) of them

@@ -176,6 +176,18 @@ class Geometry:
             area -= 2 * self.t * mm * max(0.0, min(h, self.Hd * mm) - self.He * mm)
         return area
 
+    # where eq 14's circulation rate W_s is taken (evaluate, and the cellZone
+    # downcomerBase whose solid flux spoutFoam sums every step)
+    def circulation_row(self):
+        """z [mm] of the cell row of W_s: the row whose centre lies nearest one
+        cell height above the base's top, the first full row above it."""
+        return (round((self.baseTop + self.dz) / self.dz - 0.5) + 0.5) * self.dz
+
+    def downcomer_x(self):
+        """|x| [mm] beyond which a cell centre lies in a downcomer: outside
+        the plates' outer faces."""
+        return self.Wd / 2 + self.t
+
     def removed_boxes(self):
         """Boxes (x0, x1, z0, z1) of gas cells removed from the full box:
         per column, the cells wholly below the base line at the column's inner

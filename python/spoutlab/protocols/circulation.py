@@ -193,12 +193,36 @@ def restart_clean(work, bed):
         shutil.move(kept, bed)
 
 
-def w_s(work):
+def circulation_csv(work):
+    """The rows of a run's circulation.csv: {quantity: value [kg/s]}."""
+    rows = {}
     for row in list(open(os.path.join(work, 'circulation.csv')))[1:]:
         name, _, value = row.rsplit(',', 2)
-        if name.startswith('W_s'):
-            return float(value)
+        rows[name] = float(value)
+    return rows
+
+
+def w_s(work):
+    """W_s (eq 14) from the run's time-averaged fields [kg/s]."""
+    for name, value in circulation_csv(work).items():
+        if name.startswith('W_s downward'):
+            return value
     raise ValueError(work)
+
+
+def w_s_error(work):
+    """The standard error of W_s from the every-step series' blocks [kg/s],
+    or None (a window shorter than two blocks, a run from before the
+    series)."""
+    for name, value in circulation_csv(work).items():
+        if name.startswith('W_s standard error'):
+            return value
+    return None
+
+
+def error_text(ws, err):
+    """' +- 0.0123 (4.1 %)', the standard error beside W_s, or ''."""
+    return '' if err is None else ' +- %.4f (%.1f %%)' % (err, 100 * err / ws if ws else float('nan'))
 
 
 def main(argv):
@@ -206,23 +230,26 @@ def main(argv):
     run_all(o, points(o))
     table = []
     for label, u, _, He, mu in points(o):
-        ws = w_s(os.path.join('runs', label))
+        ws, err = w_s(os.path.join('runs', label)), w_s_error(os.path.join('runs', label))
         ref = eq15(u, He) if He is not None else eq16(mu)
-        table.append((label, u, He, mu, ws, ref))
-        print('circulation: %s: W_s = %.4f kg/s (paper eq %s: %.4f)'
-              % (label, ws, '15' if He is not None else '16', ref), flush=True)
+        table.append((label, u, He, mu, ws, ref, err))
+        print('circulation: %s: W_s = %.4f kg/s%s (paper eq %s: %.4f)'
+              % (label, ws, error_text(ws, err), '15' if He is not None else '16', ref),
+              flush=True)
     name = 'circulation_%s' % o['study']
     with open(name + '.csv', 'w') as f:
         f.write('run,superficial velocity [m/s],He [mm],friction coefficient,'
-                'W_s SpoutLab [kg/s],W_s paper correlation [kg/s]\n')
+                'W_s SpoutLab [kg/s],W_s paper correlation [kg/s],'
+                'W_s standard error [kg/s]\n')
         for row in table:
-            f.write('%s,%g,%s,%s,%.6g,%.6g\n' % (row[0], row[1], row[2] or '', row[3] or '',
-                                                 row[4], row[5]))
+            f.write('%s,%g,%s,%s,%.6g,%.6g,%s\n' % (row[0], row[1], row[2] or '', row[3] or '',
+                                                    row[4], row[5],
+                                                    '' if row[6] is None else '%.6g' % row[6]))
     kick = o['kick'].split(',')
     text = '# %g s per run (spin-up at %s m/s for %s s), W_s averaged over the last %g s\n' \
         % (o['time'], kick[0], kick[1], o['average'])
-    text += '\n'.join('%-18s u_s = %.2f m/s  W_s = %.4f kg/s  correlation %.4f kg/s'
-                      % (r[0], r[1], r[4], r[5]) for r in table) + '\n'
+    text += '\n'.join('%-18s u_s = %.2f m/s  W_s = %.4f kg/s%s  correlation %.4f kg/s'
+                      % (r[0], r[1], r[4], error_text(r[4], r[6]), r[5]) for r in table) + '\n'
     open(name + '.txt', 'w').write(text)
     sys.stdout.write(text)
     # the table's numbers as it prints them, for protocols/results
@@ -230,6 +257,7 @@ def main(argv):
         json.dump({'settings': text.splitlines()[0][1:].strip(),
                    'points': [{'label': r[0], 'u_m_s': float('%.2f' % r[1]),
                                'W_s_kg_s': float('%.4f' % r[4]),
+                               'W_s_err_kg_s': None if r[6] is None else float('%.3g' % r[6]),
                                'correlation_kg_s': float('%.4f' % r[5])} for r in table]},
                   f, indent=1)
         f.write('\n')

@@ -834,31 +834,52 @@ def ums_figures(ums):
         [('snapshot_down_u%g.png' % u, 'fig3_snapshot_u%g.png' % u) for u in fig3_velocities(ums)]
 
 
+def slope_note(slope):
+    """How d log10 W_s / d mu was fitted, and how well the line fits."""
+    if slope[1] is None:
+        return 'least squares over the friction runs'
+    return ('least squares over the friction runs weighted by their W_s standard errors; '
+            'reduced chi-square %s%s' % ('%.2g' % slope[2] if slope[2] is not None else '-',
+                                         ', the error scaled by its root' if slope[2] and
+                                         slope[2] > 1 else ''))
+
+
 def circulation_rows(case, study):
     """Rows of one study, its points (label, W_s, correlation) and, for the
-    friction study, the fitted slope."""
+    friction study, the fitted slope: (slope, its standard error or None,
+    reduced chi-square or None); weighted by the points' standard errors
+    when every point has one (log10 W_s's error: SE / (W_s ln 10))."""
     rows, points, slope = [], [], None
     for _ in (study,):
         if not os.path.isfile(os.path.join(case, 'circulation_%s.txt' % study)):
             continue
-        mus, logs = [], []
+        mus, logs, sigmas = [], [], []
         table = read_json(case, 'circulation_%s.json' % study,
                           'protocols/circulation %s with its options' % study)
         how = table['settings']
         for p in table['points']:
             label, ws, ref = p['label'], p['W_s_kg_s'], p['correlation_kg_s']
+            err = p.get('W_s_err_kg_s')
             points.append((label, ws, ref))
-            rows.append(('W_s, %s' % label, '%.3f kg/s (%+.0f %%)' % (ws, 100 * (ws / ref - 1)),
+            rows.append(('W_s, %s' % label, '%.3f kg/s (%+.0f %%)%s'
+                         % (ws, 100 * (ws / ref - 1),
+                            '' if err is None else ', standard error %.3f (%.1f %%)'
+                            % (err, 100 * err / ws)),
                          '%.3f kg/s (eq %s)' % (ref, '15' if study == 'velocity' else '16'),
                          'u_s = %.2f m/s; %s' % (p['u_m_s'], how),
                          '%.2f h' % (wall_time(os.path.join(case, 'runs', label)) / 3600)))
             if study == 'friction' and ws > 0:
                 mus.append(float(label[2:label.index('_')]))
                 logs.append(math.log10(ws))
-        if len(mus) > 1:
-            slope = profilefeatures.slope(mus, logs)
-            rows.append(('d log10 W_s / d mu', '%.2f' % slope, '-3.25 (eq 16)',
-                         'least squares over the friction runs', ''))
+                sigmas.append(err / (ws * math.log(10)) if err else None)
+        if len(mus) > 1 and None not in sigmas:
+            slope = profilefeatures.weighted_slope(mus, logs, sigmas)
+            rows.append(('d log10 W_s / d mu', '%.2f +- %.2f (one standard error)'
+                         % slope[:2], '-3.25 (eq 16)', slope_note(slope), ''))
+        elif len(mus) > 1:
+            slope = (profilefeatures.slope(mus, logs), None, None)
+            rows.append(('d log10 W_s / d mu', '%.2f' % slope[0], '-3.25 (eq 16)',
+                         slope_note(slope), ''))
     return rows, points, slope
 
 
@@ -1225,8 +1246,11 @@ def build(ums, circ, heat, figure_dir, noplates=(), maps=None, mixing=(), drying
                                              if label.startswith('mu0.063_') else ''))
                     for label, ws, ref in points]
             if slope is not None:
-                keys.append(('draft.dlogWs_dmu', '%.3g' % slope, '', '-3.25',
-                             'least squares over the friction runs'))
+                keys.append(('draft.dlogWs_dmu', '%.3g' % slope[0], '', '-3.25',
+                             slope_note(slope)))
+            if slope is not None and slope[1] is not None:
+                keys.append(('draft.dlogWs_dmu_err', '%.2g' % slope[1], '', '',
+                             'one standard error of draft.dlogWs_dmu; ' + slope_note(slope)))
             new['friction'] = (rows, keys, figures('friction', circ, [
                 ('circulation_friction.png', 'fig7_circulation_friction.png')]))
         rows, points, _ = circulation_rows(circ, 'velocity')

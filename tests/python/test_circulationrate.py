@@ -1,0 +1,143 @@
+"""The circulation rate's standard error (spoutlab.circulationrate) and the
+weighted slope of log10 W_s against the friction coefficient
+(spoutlab.profilefeatures.weighted_slope), on series and points whose
+answers are known by construction; and the series read back from a
+made-up downcomerFlux output."""
+import math
+import os
+import random
+import shutil
+import tempfile
+import types
+import unittest
+
+from spoutlab import circulationrate as cr
+from spoutlab import profilefeatures as pf
+
+DT = 3e-4
+
+
+class BlockStandardError(unittest.TestCase):
+    def test_blocks_of_known_means(self):
+        # each 1 s block constant at a known value; before the window and a
+        # last half block hold wild values that must stay out of the error
+        means = [1.0, 3.0, 2.0, 6.0]
+        t, y = [], []
+        for k in range(5500):                      # samples of 1 ms, mid-step
+            ti = (k + 0.5) * 1e-3
+            t.append(ti)
+            s = ti - 1.0                           # into the window
+            y.append(1e3 if s < 0 else means[int(s)] if s < 4.0 else 50.0)
+        mean, error, blocks = cr.block_standard_error(t, y, 1.0)
+        m = sum(means) / 4
+        sd = math.sqrt(sum((x - m) ** 2 for x in means) / 3)
+        self.assertEqual(blocks, 4)
+        self.assertAlmostEqual(error, sd / 2, places=9)
+        # the mean takes the half block too, not the samples before the window
+        self.assertAlmostEqual(mean, (m * 4000 + 50.0 * 500) / 4500, places=9)
+
+    def test_window_starts_at_its_first_step(self):
+        # OpenFOAM's fieldAverage takes the step at timeStart itself
+        mean, _, _ = cr.block_standard_error([0.9, 1.0, 1.5], [100.0, 5.0, 1.0], 1.0)
+        self.assertEqual(mean, 3.0)
+
+    def test_white_noise(self):
+        # independent samples: the block error estimates sigma / sqrt(n)
+        rng = random.Random(7)
+        t = [(k + 1) * DT for k in range(int(round(40.2 / DT)))]
+        y = [0.3 + rng.gauss(0, 0.1) for _ in t]
+        mean, error, blocks = cr.block_standard_error(t, y, 0.0)
+        expected = 0.1 / math.sqrt(len(t))
+        self.assertEqual(blocks, 40)
+        # 40 blocks: the estimate's own relative spread is 1/sqrt(78), 11 %
+        self.assertLess(abs(error / expected - 1), 0.35)
+        self.assertLess(abs(mean - 0.3), 4 * expected)
+
+    def test_correlated_series(self):
+        # AR(1) with a correlation time of 0.1 s: the naive sigma/sqrt(n)
+        # is far too small, the blocks get the error of the mean
+        rng = random.Random(11)
+        tau, sigma = 0.1, 0.05
+        a = math.exp(-DT / tau)
+        x, t, y = 0.0, [], []
+        for k in range(int(round(60 / DT))):
+            x = a * x + math.sqrt(1 - a * a) * sigma * rng.gauss(0, 1)
+            t.append((k + 1) * DT)
+            y.append(0.2 + x)
+        mean, error, blocks = cr.block_standard_error(t, y, 0.0)
+        n = len(y)
+        exact = sigma * math.sqrt((1 + a) / (1 - a) / n)   # the AR(1) mean's error
+        naive = sigma / math.sqrt(n)
+        self.assertGreater(exact / naive, 10)
+        self.assertLess(abs(error / exact - 1), 0.4)        # 60 blocks: 13 % spread
+
+    def test_too_short_a_window(self):
+        t = [(k + 1) * DT for k in range(int(round(1.5 / DT)))]
+        mean, error, blocks = cr.block_standard_error(t, [2.0] * len(t), 0.0)
+        self.assertEqual((mean, error, blocks), (2.0, None, 1))
+        self.assertEqual(cr.block_standard_error(t, [2.0] * len(t), 5.0), (None, None, 0))
+
+
+class Series(unittest.TestCase):
+    def test_read_back(self):
+        # two time directories (a restart at 0.6 s that repeats 0.6): the
+        # later one's rows replace the earlier's from its first time
+        case = tempfile.mkdtemp()
+        self.addCleanup(shutil.rmtree, case)
+        g = types.SimpleNamespace(dx=11.0, Lb=40.0, particles={'rhop': 1231.0})
+        area = 11e-3 * 40e-3
+        for start, rows in (('0', [(0.3, -1e-3), (0.6, 9.0), (0.9, 9.0)]),
+                            ('0.6', [(0.6, -2e-3), (0.9, -4e-3)])):
+            d = os.path.join(case, 'postProcessing', cr.FUNCTION_OBJECT, start)
+            os.makedirs(d)
+            with open(os.path.join(d, 'volFieldValue.dat'), 'w') as f:
+                f.write('# Region type : cellZone downcomerBase\n# Time\tsum(solidFlux)\n')
+                for ti, fz in rows:
+                    f.write('%g\t(0.5 0.1 %r)\n' % (ti, fz))
+        t, ws = cr.series(case, g)
+        self.assertEqual(t, [0.3, 0.6, 0.9])
+        for got, fz in zip(ws, (-1e-3, -2e-3, -4e-3)):
+            self.assertAlmostEqual(got, -1231.0 * area * fz, places=12)
+
+    def test_no_output(self):
+        case = tempfile.mkdtemp()
+        self.addCleanup(shutil.rmtree, case)
+        g = types.SimpleNamespace(dx=11.0, Lb=40.0, particles={'rhop': 1231.0})
+        self.assertIsNone(cr.series(case, g))
+
+
+class WeightedSlope(unittest.TestCase):
+    def test_exact_line(self):
+        xs = [0.02, 0.063, 0.1, 0.2, 0.3]
+        ys = [-0.194 - 3.25 * x for x in xs]
+        sig = [0.02, 0.01, 0.02, 0.03, 0.04]
+        b, error, chi2 = pf.weighted_slope(xs, ys, sig)
+        self.assertAlmostEqual(b, -3.25, places=10)
+        w = [1 / s ** 2 for s in sig]
+        mx = sum(wi * x for wi, x in zip(w, xs)) / sum(w)
+        self.assertAlmostEqual(error, 1 / math.sqrt(sum(wi * (x - mx) ** 2
+                                                        for wi, x in zip(w, xs))), places=12)
+        self.assertAlmostEqual(chi2, 0.0, places=12)
+
+    def test_weights_pull_the_line(self):
+        # a point known a hundred times better than the others sets the line
+        # through it: the slope of two precise points wins
+        xs, ys = [0.0, 1.0, 2.0], [0.0, 1.0, 5.0]
+        b, _, _ = pf.weighted_slope(xs, ys, [0.001, 0.001, 1.0])
+        self.assertAlmostEqual(b, 1.0, places=4)
+        self.assertAlmostEqual(pf.slope(xs, ys), 2.5, places=12)
+
+    def test_scatter_widens_the_error(self):
+        # points off the line by about 3 sigma: chi-square above 1, and the
+        # error grows by its root
+        xs, sig = [0.0, 1.0, 2.0, 3.0], [0.1] * 4
+        ys = [0.3, 0.7, 2.3, 2.7]
+        b, error, chi2 = pf.weighted_slope(xs, ys, sig)
+        bare = 0.1 / math.sqrt(sum((x - 1.5) ** 2 for x in xs))
+        self.assertGreater(chi2, 1)
+        self.assertAlmostEqual(error, bare * math.sqrt(chi2), places=12)
+        self.assertAlmostEqual(b, pf.slope(xs, ys), places=12)   # equal weights
+
+
+if __name__ == '__main__':
+    unittest.main()
