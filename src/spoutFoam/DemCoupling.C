@@ -129,7 +129,7 @@ void DemCoupling::readControls()
         );
     }
     deleteLost_ = isSecond(dict_, "lostParticles", "stop", "delete");
-    faceBalance_ = isSecond(dict_, "dragVelocity", "cellCentre", "flux");
+    faceBalance_ = !isSecond(dict_, "dragVelocity", "flux", "cellCentre");
     if (faceBalance_)
     {
         // the pressure gradient's face shares (gradP), written with the
