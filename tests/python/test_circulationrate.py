@@ -3,6 +3,7 @@ weighted slope of log10 W_s against the friction coefficient
 (spoutlab.profilefeatures.weighted_slope), on series and points whose
 answers are known by construction; and the series read back from a
 made-up downcomerFlux output."""
+import json
 import math
 import os
 import random
@@ -137,6 +138,60 @@ class WeightedSlope(unittest.TestCase):
         self.assertGreater(chi2, 1)
         self.assertAlmostEqual(error, bare * math.sqrt(chi2), places=12)
         self.assertAlmostEqual(b, pf.slope(xs, ys), places=12)   # equal weights
+
+
+
+class FrictionResults(unittest.TestCase):
+    """protocols/results on a made-up friction study: the slope weighted by
+    the points' standard errors, and its error key."""
+
+    def study(self, errors):
+        case = tempfile.mkdtemp()
+        self.addCleanup(shutil.rmtree, case)
+        mus = [0.02, 0.1, 0.3]
+        points = [{'label': 'mu%g_u1.25' % mu, 'u_m_s': 1.25,
+                   'W_s_kg_s': 10 ** (-0.2 - 3.0 * mu), 'W_s_err_kg_s': err,
+                   'correlation_kg_s': 10 ** (-3.25 * mu - 0.194)}
+                  for mu, err in zip(mus, errors)]
+        with open(os.path.join(case, 'circulation_friction.json'), 'w') as f:
+            json.dump({'settings': 'made up', 'points': points}, f)
+        open(os.path.join(case, 'circulation_friction.txt'), 'w').write('made up\n')
+        return case, mus, points
+
+    def test_weighted_slope_and_its_error(self):
+        from spoutlab.protocols import results
+        case, mus, points = self.study([0.02, 0.01, 0.005])
+        rows, _, slope = results.circulation_rows(case, 'friction')
+        self.assertAlmostEqual(slope[0], -3.0, places=3)      # on the line: no scatter
+        sig = [p['W_s_err_kg_s'] / (p['W_s_kg_s'] * math.log(10)) for p in points]
+        self.assertAlmostEqual(slope[1], pf.weighted_slope(mus, [math.log10(p['W_s_kg_s'])
+                                                                 for p in points], sig)[1])
+        self.assertIn('+-', rows[-1][1])
+
+    def test_without_errors_the_plain_slope(self):
+        from spoutlab.protocols import results
+        case, _, _ = self.study([None, 0.01, 0.005])
+        _, _, slope = results.circulation_rows(case, 'friction')
+        self.assertAlmostEqual(slope[0], -3.0, places=3)
+        self.assertEqual(slope[1:], (None, None))
+
+
+class DragVelocityLine(unittest.TestCase):
+    def test_from_the_case_copies(self):
+        from spoutlab.protocols import results
+        root = tempfile.mkdtemp()
+        self.addCleanup(shutil.rmtree, root)
+        for name, text in (('new', 'dragVelocity      flux;\n#include "heatTransfer"\n'),
+                           ('old', 'dragModel Gidaspow;\n'), ('cc', 'dragVelocity cellCentre;\n')):
+            os.makedirs(os.path.join(root, name, 'constant'))
+            open(os.path.join(root, name, 'constant', 'couplingProperties'), 'w').write(text)
+        self.assertEqual(results.drag_velocity(os.path.join(root, 'new')), 'flux')
+        self.assertEqual(results.drag_velocity(os.path.join(root, 'old')), 'cellCentre')
+        self.assertIsNone(results.drag_velocity(os.path.join(root, 'none')))
+        line = results.drag_velocity_line([os.path.join(root, n) for n in ('old', 'cc', 'none')])
+        self.assertIn('cellCentre', line)
+        self.assertNotIn('flux`', line)
+        self.assertEqual(results.drag_velocity_line([]), '')
 
 
 if __name__ == '__main__':

@@ -1215,10 +1215,11 @@ def coarse_runs_section(coarse, runs, figure_dir):
 def build(ums, circ, heat, figure_dir, noplates=(), maps=None, mixing=(), drying=None,
           drytime=None, coarse=(), bed3d=(), coarse_runs=None, mixing_candidates=None,
           spout_height=None):
-    """section -> (table rows, results.csv rows, figure names) for the runs given."""
-    new = {}
+    """section -> (table rows, results.csv rows, figures, drag_velocity_line)."""
+    new, sources = {}, {}
 
     def figures(section, case, pairs):
+        sources.setdefault(section, []).append(case)
         remove_figures(section, figure_dir)
         return copy(case, pairs, figure_dir)
 
@@ -1310,7 +1311,29 @@ def build(ums, circ, heat, figure_dir, noplates=(), maps=None, mixing=(), drying
             r, k, p = bed3d_coarse_section(case, ref)
             rows, keys, pngs = rows + r, keys + k, pngs + copy(case, p, figure_dir)
         new['bed3dcoarse'] = (rows, keys, pngs)
-    return new
+    return {name: s + (drag_velocity_line(sources.get(name, [])),) for name, s in new.items()}
+
+
+def drag_velocity(case):
+    """The gas velocity of the drag in a protocol's case copy: its
+    constant/couplingProperties' dragVelocity; a copy without the entry is
+    from before it was written there, when cellCentre was the default.
+    (Read as text: the copy's #include files exist only in its runs.)"""
+    path = os.path.join(case, 'constant', 'couplingProperties')
+    if not os.path.isfile(path):
+        return None
+    found = re.search(r'^\s*dragVelocity\s+(\w+)\s*;', open(path).read(), re.M)
+    return found.group(1) if found else 'cellCentre'
+
+
+def drag_velocity_line(cases):
+    """The section's line saying which gas velocity its runs' drag took."""
+    names = sorted({v for v in map(drag_velocity, cases) if v})
+    text = {'flux': "the fluxes' interstitial velocity (`dragVelocity flux`, the default)",
+            'cellCentre': "the cell-centre U (`dragVelocity cellCentre`, the default until "
+                          "issue 25 made it flux)"}
+    return ('Drag from %s.' % ' and '.join(text.get(n, '`%s`' % n) for n in names)
+            if names else '')
 
 
 def old_sections(path):
@@ -1319,9 +1342,9 @@ def old_sections(path):
     return dict(re.findall(r'<!-- section (\w+) -->\n(.*?)<!-- end \1 -->\n', text, re.S))
 
 
-def section_text(name, title, rows, figures):
-    lines = ['## %s' % title, '', '| quantity | SpoutLab | paper | settings | wall time |',
-             '|---|---|---|---|---|']
+def section_text(name, title, rows, figures, drag=''):
+    lines = ['## %s' % title, ''] + ([drag, ''] if drag else []) + \
+        ['| quantity | SpoutLab | paper | settings | wall time |', '|---|---|---|---|---|']
     # a '|' inside a cell would end it
     lines += ['| %s | %s | %s | %s | %s |' % tuple(str(c).replace('|', '\\|') for c in r)
               for r in rows]
@@ -1421,8 +1444,8 @@ def main(argv):
              'settings; a call of `results` rewrites the sections whose runs it is given.',
              'Targets: docs/DESIGN.md §4. The same numbers, machine-readable: results.csv.', '']
     for name, title in SECTIONS:
-        text = section_text(name, title, new[name][0], new[name][2]) if name in new \
-            else old.get(name)
+        text = section_text(name, title, new[name][0], new[name][2], new[name][3]) \
+            if name in new else old.get(name)
         if text:
             lines.append('<!-- section %s -->\n%s<!-- end %s -->' % (name, text, name))
     os.makedirs(os.path.dirname(out), exist_ok=True)
