@@ -93,7 +93,7 @@ PACKED_BED = "re:^case\\.packedBed$"          # dP vs Ergun, mapped voidage vs t
 SETTLING = "re:^case\\.settlingParticle$"     # terminal velocity under Gidaspow (Wen-Yu)
 MIN_FLUIDISATION = "re:^case\\.minFluidisation$"  # bed lifted at u_mf: drag plus -V grad p
 FOAM = "re:^foam\\."                          # the divided model on real meshes
-EVERY_LAYER = "re:^case\\.packedBed\\.everyLayer$"  # every layer, floor and surface (dragVelocity flux)
+EVERY_LAYER = "re:^case\\.packedBed$"  # every layer, floor and surface (dragVelocity flux)
 
 FAULTS = [
     Fault("beta x 1.1",
