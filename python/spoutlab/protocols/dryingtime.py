@@ -71,6 +71,7 @@ from spoutlab import casefiles as sc
 from spoutlab import circulationstats
 from spoutlab import moistair
 from spoutlab import spoutedbed
+from spoutlab.protocols import circulation
 from spoutlab.protocols import heattransfer
 
 
@@ -121,10 +122,10 @@ def with_circulation(start, bin_width):
 
 def ws_of(work):
     """W_s of eq 14 from the case's circulation.csv [kg/s]."""
-    for line in open(os.path.join(work, 'circulation.csv')):
-        if line.startswith('W_s downward'):
-            return float(line.rsplit(',', 1)[1])
-    sys.exit('dryingTime: %s/circulation.csv: no W_s row (the case evaluate failed?)' % work)
+    try:
+        return circulation.w_s(work)
+    except ValueError:
+        sys.exit('dryingTime: %s/circulation.csv: no W_s row (the case evaluate failed?)' % work)
 
 
 def statistics(o):
