@@ -4,6 +4,7 @@
 #include "HeatCoupling.H"
 #include "RangeWarnings.H"
 
+#include "FluxVelocity.H"
 #include "FoamParameters.H"
 #include "InputError.hpp"
 #include "OStringStream.H"
@@ -213,14 +214,15 @@ void HeatCoupling::updateCoefficients
     // from them where the drag changes steeply from cell to cell (in a
     // packed bed's bottom layer by 26 %, which put h 15 % below the
     // correlation's value at the bed's own superficial velocity).
-    const Foam::volVectorField U
+    // FluxVelocity.H says why not fvc::reconstruct.
+    const Foam::vectorField U
     (
-        Foam::fvc::reconstruct(phi_)/Foam::max(voidfraction_, Foam::SMALL)
+        fluxVelocity(phi_)/Foam::max(voidfraction_.primitiveField(), Foam::SMALL)
     );
     cells_ = exchange_.cellCoefficients
     (
         locator_, particles, map, momentum,
-        GasHeatCellFields{centres_, locator_.withHalo(U.primitiveField()), eps}, gas_,
+        GasHeatCellFields{centres_, locator_.withHalo(U), eps}, gas_,
         humid_ ? humid_->vapourDiffusivity : 0.0
     );
     forAll(K_, i)

@@ -8,6 +8,7 @@
 #include "RankGather.H"
 
 #include "atom.h"
+#include "atom_vec.h"
 #include "comm.h"
 #include "domain.h"
 #include "fix_property_atom.h"
@@ -842,6 +843,85 @@ long LiggghtsDem::unpackStepState(const std::vector<double>& rows)
 }
 
 
+std::vector<int> LiggghtsDem::writtenOrder(const std::vector<double>& rows) const
+{
+    // the local atoms sorted by their row; one without a row goes last
+    auto* atom = lmp_->atom;   // its map() is not const
+    const int nLocal = atom->nlocal;
+    const int width = stepStateWidth();
+    std::vector<std::size_t> rowOf(static_cast<std::size_t>(nLocal), rows.size());
+    for (std::size_t k = 0; k < rows.size()/width; ++k)
+    {
+        const int i = atom->map(int(rows[k*width]));
+        if (i >= 0 && i < nLocal) rowOf[std::size_t(i)] = k;
+    }
+    std::vector<int> order(static_cast<std::size_t>(nLocal));
+    for (int i = 0; i < nLocal; ++i) order[std::size_t(i)] = i;
+    std::stable_sort
+    (
+        order.begin(), order.end(),
+        [&rowOf](int a, int b) { return rowOf[std::size_t(a)] < rowOf[std::size_t(b)]; }
+    );
+    return order;
+}
+
+
+void LiggghtsDem::restoreOrder(const std::vector<double>& rows)
+{
+    // A parallel restart reads each atom onto LIGGGHTS' own even split of
+    // the box; the set-up on the mesh's boxes (setDecomposition) then moves
+    // those on the wrong side of a cut to their rank, at the end of its list
+    // (46 of rank 1's 833 on the draft-plate bed's two slabs).  The order
+    // is that of every sum over a rank's particles -- their void fraction
+    // and Us per cell, the contact forces -- so the restart parted from the
+    // uninterrupted run at round-off (one cell's void fraction by 1 ulp at
+    // once), which grew to 1e-8 within 6 steps.  The step state's rows are
+    // in the order the writing run held its atoms; serially, and whenever
+    // no atom moved, that is the order read already.
+    const std::vector<int> order = writtenOrder(rows);
+    int inOrder = 1;
+    for (std::size_t k = 0; k < order.size(); ++k) inOrder = inOrder && order[k] == int(k);
+    MPI_Allreduce(MPI_IN_PLACE, &inOrder, 1, MPI_INT, MPI_MIN, comm_);
+    if (inOrder) return;
+    // LIGGGHTS keeps the contact histories in its neighbour lists, by atom
+    // index, between re-neighbourings: into the atoms' own arrays first,
+    // as a set-up's first stage does (which then finds nothing newer)
+    lmp_->modify->setup_pre_exchange();
+    permuteAtoms(order);
+    setup();   // ghosts, atom map and neighbour lists of the new order
+}
+
+
+void LiggghtsDem::permuteAtoms(const std::vector<int>& order)
+{
+    // by cycles, through one spare slot past the local and ghost atoms (a
+    // ghost's slot would leave LIGGGHTS' atom map naming an atom there that
+    // is not); AtomVec::copy carries the fixes' per-atom data (fluid force,
+    // contact history) along
+    auto* atom = lmp_->atom;
+    const int nLocal = atom->nlocal;
+    const int spare = nLocal + atom->nghost;
+    if (atom->nmax <= spare) atom->avec->grow(0);
+    localAtoms_.clear();
+    std::vector<bool> placed(order.size(), false);
+    for (int start = 0; start < nLocal; ++start)
+    {
+        if (placed[std::size_t(start)]) continue;
+        placed[std::size_t(start)] = true;
+        if (order[std::size_t(start)] == start) continue;
+        atom->avec->copy(start, spare, 0);
+        int to = start;
+        for (int from = order[std::size_t(to)]; from != start; from = order[std::size_t(to)])
+        {
+            atom->avec->copy(from, to, 0);
+            to = from;
+            placed[std::size_t(to)] = true;
+        }
+        atom->avec->copy(spare, to, 0);
+    }
+}
+
+
 void LiggghtsDem::writeRestart(const std::string& restartFile, const std::string& stateFile)
 {
     Activity doing("writing the restart '" + restartFile + "'");
@@ -919,6 +999,7 @@ void LiggghtsDem::readStepState(const std::string& file)
     {
         throw InputError("DEM step state '" + file + "': truncated file");
     }
+    restoreOrder(all);
     long missing = unpackStepState(all);
     MPI_Allreduce(MPI_IN_PLACE, &missing, 1, MPI_LONG, MPI_SUM, comm_);
     if (missing != 0)

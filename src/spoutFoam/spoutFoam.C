@@ -23,6 +23,7 @@ Description
 #include "reverseLinear.H"
 
 #include "DemCoupling.H"
+#include "FluxVelocity.H"
 #include "InputError.hpp"
 #include "ModelFamilies.hpp"
 
