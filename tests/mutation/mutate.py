@@ -123,7 +123,7 @@ FAULTS = [
           UNIT + [SETTLING], "Wen-Yu's voidage function eps^-1.65"),
     Fault("drag from the cell-centre U",
           [Edit("src/spoutFoam/pEqn.H",
-                r"fvc::reconstruct\s*\(\s*phi\s*\)\s*\(\s*\)\s*\.\s*primitiveField\s*\(\s*\)"
+                r"spoutlab::fluxVelocity\s*\(\s*phi\s*\)"
                 r"\s*/\s*max\s*\(\s*voidfraction\s*\.\s*primitiveField\s*\(\s*\)\s*,\s*SMALL\s*\)\s*;",
                 "(HbyA - rAU*voidfraction*fvc::grad(p))().primitiveField();")],
           UNIT + [EVERY_LAYER],
