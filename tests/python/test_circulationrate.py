@@ -192,6 +192,10 @@ class DragVelocityLine(unittest.TestCase):
         self.assertIn('cellCentre', line)
         self.assertNotIn('flux`', line)
         self.assertEqual(results.drag_velocity_line([]), '')
+        row = results.with_drag({'note': 'eq 16'}, results.drag_velocity_line(
+            [os.path.join(root, 'new')]))
+        self.assertEqual(row['note'], 'eq 16; dragVelocity flux')
+        self.assertEqual(results.with_drag({'note': 'x'}, '')['note'], 'x')
 
 
 if __name__ == '__main__':

@@ -1353,12 +1353,21 @@ def section_text(name, title, rows, figures, drag=''):
     return '\n'.join(lines) + '\n\n'
 
 
+def with_drag(row, line):
+    """A results.csv row whose note ends with its section's drag velocity
+    (drag_velocity_line), e.g. '; dragVelocity flux'."""
+    names = re.findall(r'`(dragVelocity \w+)', line)
+    if names:
+        row['note'] = '; '.join(([row['note']] if row['note'] else []) + names)
+    return row
+
+
 def write_csv(path, new):
     """results.csv: the regenerated sections' rows, the others as they were."""
     kept = []
     if os.path.isfile(path):
         kept = [r for r in csv.DictReader(open(path)) if section_of_key(r['key']) not in new]
-    rows = kept + [dict(zip(CSV_HEADER, k)) for s in new.values() for k in s[1]]
+    rows = kept + [with_drag(dict(zip(CSV_HEADER, k)), s[3]) for s in new.values() for k in s[1]]
     order = [name for name, _ in SECTIONS]
     rows.sort(key=lambda r: order.index(section_of_key(r['key'])))
     with open(path, 'w', newline='') as f:
@@ -1442,7 +1451,9 @@ def main(argv):
              'Written by `openfoam_cases/spoutDraftPlates/protocols/results` from the protocol',
              'outputs; do not edit by hand. Each section comes from the runs named in its',
              'settings; a call of `results` rewrites the sections whose runs it is given.',
-             'Targets: docs/DESIGN.md §4. The same numbers, machine-readable: results.csv.', '']
+             'Targets: docs/DESIGN.md §4. The same numbers, machine-readable: results.csv.',
+             'A section that does not say from which gas velocity its drag was taken is from',
+             'before `dragVelocity flux` became the default: `cellCentre`.', '']
     for name, title in SECTIONS:
         text = section_text(name, title, new[name][0], new[name][2], new[name][3]) \
             if name in new else old.get(name)
