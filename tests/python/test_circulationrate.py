@@ -188,14 +188,15 @@ class DragVelocityLine(unittest.TestCase):
         self.assertEqual(results.drag_velocity(os.path.join(root, 'new')), 'flux')
         self.assertEqual(results.drag_velocity(os.path.join(root, 'old')), 'cellCentre')
         self.assertIsNone(results.drag_velocity(os.path.join(root, 'none')))
-        line = results.drag_velocity_line([os.path.join(root, n) for n in ('old', 'cc', 'none')])
+        line = results.drag_velocity_line(results.drag_velocities(
+            [os.path.join(root, n) for n in ('old', 'cc', 'none')]))
         self.assertIn('cellCentre', line)
         self.assertNotIn('flux`', line)
         self.assertEqual(results.drag_velocity_line([]), '')
-        row = results.with_drag({'note': 'eq 16'}, results.drag_velocity_line(
+        row = results.with_drag({'note': 'eq 16'}, results.drag_velocities(
             [os.path.join(root, 'new')]))
         self.assertEqual(row['note'], 'eq 16; dragVelocity flux')
-        self.assertEqual(results.with_drag({'note': 'x'}, '')['note'], 'x')
+        self.assertEqual(results.with_drag({'note': 'x'}, [])['note'], 'x')
 
 
 if __name__ == '__main__':

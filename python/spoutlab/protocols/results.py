@@ -872,14 +872,12 @@ def circulation_rows(case, study):
                 mus.append(float(label[2:label.index('_')]))
                 logs.append(math.log10(ws))
                 sigmas.append(err / (ws * math.log(10)) if err else None)
-        if len(mus) > 1 and None not in sigmas:
-            slope = profilefeatures.weighted_slope(mus, logs, sigmas)
-            rows.append(('d log10 W_s / d mu', '%.2f +- %.2f (one standard error)'
-                         % slope[:2], '-3.25 (eq 16)', slope_note(slope), ''))
-        elif len(mus) > 1:
-            slope = (profilefeatures.slope(mus, logs), None, None)
-            rows.append(('d log10 W_s / d mu', '%.2f' % slope[0], '-3.25 (eq 16)',
-                         slope_note(slope), ''))
+        if len(mus) > 1:
+            slope = (profilefeatures.weighted_slope(mus, logs, sigmas) if None not in sigmas
+                     else (profilefeatures.slope(mus, logs), None, None))
+            rows.append(('d log10 W_s / d mu', '%.2f' % slope[0] + (
+                ' +- %.2f (one standard error)' % slope[1] if slope[1] is not None else ''),
+                '-3.25 (eq 16)', slope_note(slope), ''))
     return rows, points, slope
 
 
@@ -1215,7 +1213,7 @@ def coarse_runs_section(coarse, runs, figure_dir):
 def build(ums, circ, heat, figure_dir, noplates=(), maps=None, mixing=(), drying=None,
           drytime=None, coarse=(), bed3d=(), coarse_runs=None, mixing_candidates=None,
           spout_height=None):
-    """section -> (table rows, results.csv rows, figures, drag_velocity_line)."""
+    """section -> (table rows, results.csv rows, figures, drag_velocities)."""
     new, sources = {}, {}
 
     def figures(section, case, pairs):
@@ -1311,7 +1309,7 @@ def build(ums, circ, heat, figure_dir, noplates=(), maps=None, mixing=(), drying
             r, k, p = bed3d_coarse_section(case, ref)
             rows, keys, pngs = rows + r, keys + k, pngs + copy(case, p, figure_dir)
         new['bed3dcoarse'] = (rows, keys, pngs)
-    return {name: s + (drag_velocity_line(sources.get(name, [])),) for name, s in new.items()}
+    return {name: s + (drag_velocities(sources.get(name, [])),) for name, s in new.items()}
 
 
 def drag_velocity(case):
@@ -1326,9 +1324,13 @@ def drag_velocity(case):
     return found.group(1) if found else 'cellCentre'
 
 
-def drag_velocity_line(cases):
+def drag_velocities(cases):
+    """The dragVelocity values of a section's case copies, sorted."""
+    return sorted({v for v in map(drag_velocity, cases) if v})
+
+
+def drag_velocity_line(names):
     """The section's line saying which gas velocity its runs' drag took."""
-    names = sorted({v for v in map(drag_velocity, cases) if v})
     text = {'flux': "the fluxes' interstitial velocity (`dragVelocity flux`, the default)",
             'cellCentre': "the cell-centre U (`dragVelocity cellCentre`, the default until "
                           "issue 25 made it flux)"}
@@ -1353,12 +1355,12 @@ def section_text(name, title, rows, figures, drag=''):
     return '\n'.join(lines) + '\n\n'
 
 
-def with_drag(row, line):
-    """A results.csv row whose note ends with its section's drag velocity
-    (drag_velocity_line), e.g. '; dragVelocity flux'."""
-    names = re.findall(r'`(dragVelocity \w+)', line)
+def with_drag(row, names):
+    """A results.csv row whose note ends with its section's drag velocities
+    (drag_velocities), e.g. '; dragVelocity flux'."""
     if names:
-        row['note'] = '; '.join(([row['note']] if row['note'] else []) + names)
+        row['note'] = '; '.join(([row['note']] if row['note'] else [])
+                                + ['dragVelocity ' + n for n in names])
     return row
 
 
@@ -1455,7 +1457,8 @@ def main(argv):
              'A section that does not say from which gas velocity its drag was taken is from',
              'before `dragVelocity flux` became the default: `cellCentre`.', '']
     for name, title in SECTIONS:
-        text = section_text(name, title, new[name][0], new[name][2], new[name][3]) \
+        text = section_text(name, title, new[name][0], new[name][2],
+                            drag_velocity_line(new[name][3])) \
             if name in new else old.get(name)
         if text:
             lines.append('<!-- section %s -->\n%s<!-- end %s -->' % (name, text, name))
