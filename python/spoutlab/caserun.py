@@ -3,6 +3,7 @@ spoutFoam serially or on P ranks, with progress) and what a run used (its
 particle count, the u_s schedule of constant/inletVelocity, the averaging
 window)."""
 import os
+import re
 import sys
 
 def prepare_case(overrides, who, probes_only=False):
@@ -77,6 +78,25 @@ def run_particles(case='.'):
         if rows:
             return int(rows[0]['particles']), 'postProcessing/coupling.csv'
     return None, None
+
+
+LOST = re.compile(r'spoutFoam: (?:deleting )?(\d+) particle\(s\) '
+                  r'(?:lost by LIGGGHTS|outside the CFD mesh)')
+
+
+def lost_particles(case='.'):
+    """Particles a run removed (lostParticles delete), counted from the lines
+    spoutFoam writes to its log when it deletes them; 0 without a log."""
+    path = os.path.join(case, 'log.spoutFoam')
+    if not os.path.isfile(path):
+        return 0
+    with open(path, errors='replace') as f:
+        return sum(int(m.group(1)) for m in map(LOST.match, f) if m)
+
+
+def lost_text(lost):
+    """'; 1 particle lost', for a summary line, or '' when none was."""
+    return '; %d particle%s lost' % (lost, '' if lost == 1 else 's') if lost else ''
 
 
 def inlet_schedule(g, case='.'):

@@ -1,8 +1,9 @@
 """The circulation rate's standard error (spoutlab.circulationrate) and the
 weighted slope of log10 W_s against the friction coefficient
 (spoutlab.profilefeatures.weighted_slope), on series and points whose
-answers are known by construction; and the series read back from a
-made-up downcomerFlux output."""
+answers are known by construction; the series read back from a
+made-up downcomerFlux output; and the particles a run deleted, set and
+counted by the protocols."""
 import json
 import math
 import os
@@ -168,6 +169,18 @@ class FrictionResults(unittest.TestCase):
                                                                  for p in points], sig)[1])
         self.assertIn('+-', rows[-1][1])
 
+    def test_particles_lost_beside_their_point(self):
+        from spoutlab.protocols import results
+        case, _, points = self.study([0.02, 0.01, 0.005])
+        points[1]['particles_lost'] = 1
+        points[2]['particles_lost'] = 3
+        with open(os.path.join(case, 'circulation_friction.json'), 'w') as f:
+            json.dump({'settings': 'made up', 'points': points}, f)
+        rows, _, _ = results.circulation_rows(case, 'friction')
+        self.assertNotIn('lost', rows[0][1])
+        self.assertTrue(rows[1][1].endswith('; 1 particle lost'))
+        self.assertTrue(rows[2][1].endswith('; 3 particles lost'))
+
     def test_without_errors_the_plain_slope(self):
         from spoutlab.protocols import results
         case, _, _ = self.study([None, 0.01, 0.005])
@@ -201,3 +214,48 @@ class DragVelocityLine(unittest.TestCase):
 
 if __name__ == '__main__':
     unittest.main()
+
+
+class LostParticles(unittest.TestCase):
+    """Every protocol point runs with lostParticles delete, and what
+    spoutFoam deleted is counted from its log."""
+
+    def case(self):
+        case = tempfile.mkdtemp()
+        self.addCleanup(shutil.rmtree, case)
+        os.makedirs(os.path.join(case, 'constant'))
+        os.makedirs(os.path.join(case, '0.orig'))
+        open(os.path.join(case, 'constant', 'couplingProperties'), 'w').write(
+            'dragModel Gidaspow;\nlostParticles     stop;            // stop | delete\n')
+        with open(os.path.join(case, 'Allrun'), 'w') as f:
+            f.write('#!/bin/sh\nexit 0\n')
+        os.chmod(os.path.join(case, 'Allrun'), 0o755)
+        return case
+
+    def test_count_from_the_log(self):
+        from spoutlab import caserun
+        case = self.case()
+        self.assertEqual(caserun.lost_particles(case), 0)          # no log yet
+        open(os.path.join(case, 'log.spoutFoam'), 'w').write(
+            'Time = 1.0632\n'
+            'spoutFoam: deleting 1 particle(s) outside the CFD mesh at t = 1.0632 s (ids 2806)\n'
+            'a line that says 7 particle(s) outside the CFD mesh, quoted\n'
+            'spoutFoam: 2 particle(s) lost by LIGGGHTS (centre out of its box, ...)\n')
+        self.assertEqual(caserun.lost_particles(case), 3)
+        self.assertEqual(caserun.lost_text(3), '; 3 particles lost')
+        self.assertEqual(caserun.lost_text(0), '')
+
+    def test_points_delete_them(self):
+        from spoutlab import foamfile
+        from spoutlab.protocols import circulation
+        case = self.case()
+        o = {'kick': '2.0,1.0', 'time': 1.0, 'average': 0.5, 'np': 1, 'n': None,
+             'overrides': []}
+        here = os.getcwd()
+        os.chdir(case)
+        self.addCleanup(os.chdir, here)
+        work = circulation.run_point(o, 'p', 1.25, [], {},
+                                     [('constant/couplingProperties', 'dragModel', 'Ergun')])
+        path = os.path.join(work, 'constant', 'couplingProperties')
+        self.assertEqual(foamfile.entry(path, 'lostParticles', 'stop'), 'delete')
+        self.assertEqual(foamfile.entry(path, 'dragModel', ''), 'Ergun')

@@ -20,6 +20,7 @@ import re
 import shutil
 import sys
 
+from spoutlab import caserun
 from spoutlab import cli
 from spoutlab import profilefeatures
 from spoutlab.protocols import mixing as mixing_protocol
@@ -667,7 +668,7 @@ def spout_height_section(case):
     for r in numbers['runs']:
         note = 'run %s: %s; %s' % (r['run'], r['what'], settings)
         hours = '%.2f h' % (r['wall_s'] / 3600)
-        lost = '; %d particles lost' % r['lost'] if r['lost'] else ''
+        lost = caserun.lost_text(r['lost'])
         rows.append(('particle velocity along the spout axis, %s' % r['run'],
                      'dVp/dz %+.3f 1/s (%+.0f %% of its mean over the heights; halves of the '
                      'window %+.3f, %+.3f; over the spout\'s width %+.3f); gas %+.2f 1/s, '
@@ -864,7 +865,7 @@ def circulation_rows(case, study):
             rows.append(('W_s, %s' % label, '%.3f kg/s (%+.0f %%)%s'
                          % (ws, 100 * (ws / ref - 1),
                             '' if err is None else ', standard error %.3f (%.1f %%)'
-                            % (err, 100 * err / ws)),
+                            % (err, 100 * err / ws)) + caserun.lost_text(p.get('particles_lost')),
                          '%.3f kg/s (eq %s)' % (ref, '15' if study == 'velocity' else '16'),
                          'u_s = %.2f m/s; %s' % (p['u_m_s'], how),
                          '%.2f h' % (wall_time(os.path.join(case, 'runs', label)) / 3600)))

@@ -31,10 +31,10 @@ import collections
 import json
 import math
 import os
-import re
 import sys
 
 from spoutlab import casefiles as sc
+from spoutlab import caserun
 from spoutlab import cli
 from spoutlab import foamfile
 from spoutlab import profilefeatures
@@ -254,16 +254,6 @@ def slugs(case, average, dense=SLUG_VOIDAGE, clear=SLUG_VOIDAGE + 0.1):
     return count, count / span, time_in / span, sum(e for _, e in series) / len(series)
 
 
-LOST = re.compile(r'spoutFoam: (?:deleting )?(\d+) particle\(s\) '
-                  r'(?:lost by LIGGGHTS|outside the CFD mesh)')
-
-
-def lost_particles(case):
-    """Particles the run removed (lostParticles delete), from its log."""
-    return sum(int(m.group(1)) for m in map(LOST.match, open(os.path.join(
-        case, 'log.spoutFoam'), errors='replace')) if m)
-
-
 def analyse(o, r):
     """One run's profiles and numbers."""
     work = os.path.join('runs', 'height_' + r.name)
@@ -295,7 +285,7 @@ def analyse(o, r):
             'h_plate_over_axis_all': plate_over_axis(g, across, 'h'),
             'Re_plate_over_axis': plate_over_axis(g, across, 'Re', spoutheat.BAND),
             'slugs': count, 'slugs_per_s': rate, 'slug_share': share,
-            'eps_probe': eps_probe, 'lost': lost_particles(work),
+            'eps_probe': eps_probe, 'lost': caserun.lost_particles(work),
             'wall_s': results.wall_time(work)}
 
 
