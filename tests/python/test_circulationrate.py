@@ -181,6 +181,23 @@ class FrictionResults(unittest.TestCase):
         self.assertTrue(rows[1][1].endswith('; 1 particle lost'))
         self.assertTrue(rows[2][1].endswith('; 3 particles lost'))
 
+    def test_friction_section_without_a_ums_copy(self):
+        from spoutlab.protocols import results
+        case, _, _ = self.study([0.02, 0.01, 0.005])
+        out = os.path.join(case, 'docs', 'RESULTS.md')
+        os.makedirs(os.path.dirname(out))
+        open(out, 'w').write('<!-- section ums -->\n## kept\n<!-- end ums -->\n')
+        with open(os.path.join(os.path.dirname(out), 'results.csv'), 'w') as f:
+            f.write('key,value,unit,paper_value,note\ndraft.u_ms_m_s,1.2,m/s,1.25,kept\n')
+        self.assertEqual(results.main(['--circulation', case, '-o', out]), 0)
+        text = open(out).read()
+        self.assertIn('## kept', text)
+        self.assertIn('d log10 W_s / d mu', text)
+        keys = [line.split(',')[0] for line in open(os.path.join(os.path.dirname(out),
+                                                                 'results.csv'))]
+        self.assertIn('draft.u_ms_m_s', keys)
+        self.assertIn('draft.dlogWs_dmu_err', keys)
+
     def test_without_errors_the_plain_slope(self):
         from spoutlab.protocols import results
         case, _, _ = self.study([None, 0.01, 0.005])

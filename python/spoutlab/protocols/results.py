@@ -1386,6 +1386,9 @@ def parse(argv):
                    help='UMS_DIR, a case copy where protocols/minimumSpouting ran (ums.json, '
                         'ums.csv), then CIRCULATION_DIR, one where protocols/circulation '
                         'and profiles ran')
+    p.add_argument('--circulation', metavar='CIRCULATION_DIR',
+                   help='CIRCULATION_DIR without a UMS_DIR: its sections (friction, '
+                        'velocity, profiles) rewritten, minimum spouting kept')
     p.add_argument('--heat', metavar='HEAT_DIR',
                    help='a case copy where protocols/heatTransfer ran (heat.csv)')
     p.add_argument('--drying', metavar='DRYING_DIR',
@@ -1430,6 +1433,8 @@ def parse(argv):
     if len(a.cases) > 2:
         p.error('expected at most UMS_DIR and CIRCULATION_DIR, got %d directories'
                 % len(a.cases))
+    if a.circulation and len(a.cases) > 1:
+        p.error('--circulation: CIRCULATION_DIR given twice (second directory and option)')
     return p, a
 
 
@@ -1437,13 +1442,13 @@ def main(argv):
     p, a = parse(argv)
     out, cases, heat, noplates, maps, mixing = (a.out, a.cases, a.heat, a.noplates, a.maps,
                                                 a.mixing)
-    if not (cases or heat or noplates or maps or mixing or a.mixingCandidates or a.drying
+    if not (cases or a.circulation or heat or noplates or maps or mixing or a.mixingCandidates or a.drying
             or a.dryingTime or a.coarse or a.bed3d or a.coarseCirculation or a.coarseHeat
             or a.coarseSpeedup or a.bed3dCoarse or a.spoutHeight):
         p.print_help()
         return 2
     ums = cases[0] if cases else None
-    circ = cases[1] if len(cases) > 1 else None
+    circ = cases[1] if len(cases) > 1 else a.circulation
     new = build(ums, circ, heat, os.path.join(os.path.dirname(out), 'figures'), noplates, maps,
                 mixing, a.drying, a.dryingTime, a.coarse, a.bed3d,
                 {'circulation': a.coarseCirculation, 'heat': a.coarseHeat,
