@@ -4,6 +4,8 @@ weighted slope of log10 W_s against the friction coefficient
 answers are known by construction; the series read back from a
 made-up downcomerFlux output; and the particles a run deleted, set and
 counted by the protocols."""
+import contextlib
+import io
 import json
 import math
 import os
@@ -262,6 +264,36 @@ class LostParticles(unittest.TestCase):
         self.assertEqual(caserun.lost_text(3), '; 3 particles lost')
         self.assertEqual(caserun.lost_text(0), '')
 
+    def finished_run(self, case, options):
+        work = os.path.join(case, 'runs', 'p')
+        os.makedirs(os.path.join(work, 'constant'))
+        shutil.copy(os.path.join(case, 'constant', 'couplingProperties'),
+                    os.path.join(work, 'constant'))
+        with open(os.path.join(work, 'Allrun'), 'w') as f:
+            f.write('#!/bin/sh\necho "$@" > called\n')
+        os.chmod(os.path.join(work, 'Allrun'), 0o755)
+        open(os.path.join(work, 'log.options'), 'w').write(
+            '# options\noptions: %s\nevaluate: --window 10.0\n' % options)
+        open(os.path.join(work, 'log.spoutFoam'), 'w').write('Time = 12\n')
+        open(os.path.join(work, 'circulation.csv'), 'w').write('quantity,h,value\n')
+        return work
+
+    def test_finished_points_kept_or_continued(self):
+        from spoutlab.protocols import circulation
+        case = self.case()
+        here = os.getcwd()
+        os.chdir(case)
+        self.addCleanup(os.chdir, here)
+        options = '-u 1.25 -k 2.0,1.0 -t 12.0 -a 10.0 -np 1 mu=0.2'
+        work = self.finished_run(case, options)
+        o = {'kick': '2.0,1.0', 'time': 12.0, 'average': 10.0, 'np': 1, 'n': None,
+             'overrides': []}
+        circulation.run_point(o, 'p', 1.25, ['mu=0.2'], {})        # the same: kept
+        self.assertFalse(os.path.isfile(os.path.join(work, 'called')))
+        circulation.run_point(dict(o, time=30.0, average=28.0), 'p', 1.25, ['mu=0.2'], {})
+        self.assertEqual(open(os.path.join(work, 'called')).read().split(),
+                         ['-c'] + options.replace('12.0', '30.0').replace('10.0', '28.0').split())
+
     def test_points_delete_them(self):
         from spoutlab import foamfile
         from spoutlab.protocols import circulation
@@ -276,3 +308,88 @@ class LostParticles(unittest.TestCase):
         path = os.path.join(work, 'constant', 'couplingProperties')
         self.assertEqual(foamfile.entry(path, 'lostParticles', 'stop'), 'delete')
         self.assertEqual(foamfile.entry(path, 'dragModel', ''), 'Ergun')
+
+
+class ContinuedRuns(unittest.TestCase):
+    """--target-error: the runs above it go on by --step seconds, their
+    averaging start kept, until below it or at --longest; a run longer than
+    asked with the same start is kept; the table gives each run's end."""
+
+    # a stand-in for the case's Allrun: records its options as startCase
+    # and evaluate would and writes a W_s whose standard error falls as
+    # 1/(end - start), the averaging window
+    ALLRUN = """#!/usr/bin/python3
+import sys
+args = [a for a in sys.argv[1:] if a != '-c']
+value = dict(zip(args, args[1:]))
+end, window = float(value['-t']), float(value['-a'])
+open('log.options', 'w').write('# options\\noptions: %s\\nevaluate: --window %s\\n'
+                               % (' '.join(args), value['-a']))
+open('log.spoutFoam', 'a').write('Time = %g\\n' % end)
+with open('calls', 'a') as f:
+    f.write(' '.join(sys.argv[1:]) + '\\n')
+err = 0.9 / window if 'mu=0.3' in args else 0.1 / window
+open('circulation.csv', 'w').write('quantity,height [mm],value [kg/s]\\n'
+                                   'W_s downward in the downcomers (eq 14),427.5,1.0\\n'
+                                   'W_s standard error (1 s blocks),427.5,%r\\n' % err)
+"""
+
+    def setUp(self):
+        self.case = tempfile.mkdtemp()
+        self.addCleanup(shutil.rmtree, self.case)
+        os.makedirs(os.path.join(self.case, 'constant'))
+        os.makedirs(os.path.join(self.case, '0.orig'))
+        open(os.path.join(self.case, 'constant', 'couplingProperties'), 'w').write(
+            'lostParticles     stop;\n')
+        with open(os.path.join(self.case, 'Allrun'), 'w') as f:
+            f.write(self.ALLRUN)
+        os.chmod(os.path.join(self.case, 'Allrun'), 0o755)
+        here = os.getcwd()
+        os.chdir(self.case)
+        self.addCleanup(os.chdir, here)
+
+    def calls(self, label):
+        return open(os.path.join('runs', label, 'calls')).read().splitlines()
+
+    def test_window_and_covers(self):
+        from spoutlab.protocols import circulation as c
+        run = '-u 1.25 -k 2.0,1.0 -t 12.0 -a 10.0 -np 1 mu=0.2'.split()
+        self.assertEqual(c.window(run), (12.0, 2.0))
+        self.assertEqual(c.window(['-u', '2']), (3.0, 1.2))            # Allrun's defaults
+        self.assertTrue(c.covers(run, run))
+        self.assertTrue(c.covers('-u 1.25 -k 2.0,1.0 -t 18 -a 16 -np 1 mu=0.2'.split(), run))
+        self.assertFalse(c.covers(run, '-u 1.25 -k 2.0,1.0 -t 18 -a 16 -np 1 mu=0.2'.split()))
+        self.assertFalse(c.covers('-u 1.25 -k 2.0,1.0 -t 18 -a 15 -np 1 mu=0.2'.split(), run))
+        self.assertFalse(c.covers(run, '-u 1.25 -k 2.0,1.0 -t 12.0 -a 10.0 -np 1 mu=0.3'.split()))
+        self.assertFalse(c.covers(None, run))
+
+    def test_continued_until_below_the_target(self):
+        from spoutlab.protocols import circulation as c
+        with contextlib.redirect_stdout(io.StringIO()):
+            c.main(['friction', '--mu', '0.2,0.3', '--time', '12', '--average', '10',
+                    '--target-error', '0.05', '--step', '6', '--longest', '30'])
+        # mu 0.2: 0.1/10 = 1 %, below 5 % at once; mu 0.3: 0.9/10 = 9 %, 0.9/16 = 5.6 %,
+        # 0.9/22 = 4.1 %: on to 18 s, then to 24 s, its averages from 2 s each time
+        self.assertEqual(len(self.calls('mu0.2_u1.25')), 1)
+        asked = []
+        for call in self.calls('mu0.3_u1.25'):
+            words = call.split()
+            value = dict(zip(words, words[1:]))
+            asked.append((words[0] == '-c', float(value['-t']), float(value['-a'])))
+        self.assertEqual(asked, [(False, 12, 10), (True, 18, 16), (True, 24, 22)])
+        table = json.load(open('circulation_friction.json'))
+        self.assertEqual([(p['time_s'], p['average_s']) for p in table['points']],
+                         [(12.0, 10.0), (24.0, 22.0)])
+        self.assertIn("to each run's end (--target-error 0.05)", table['settings'])
+        # the same command again: every run covers what it asks, nothing runs
+        with contextlib.redirect_stdout(io.StringIO()):
+            c.main(['friction', '--mu', '0.2,0.3', '--time', '12', '--average', '10',
+                    '--target-error', '0.05'])
+        self.assertEqual(len(self.calls('mu0.3_u1.25')), 3)
+
+    def test_longest_stops_it(self):
+        from spoutlab.protocols import circulation as c
+        with contextlib.redirect_stdout(io.StringIO()):
+            c.main(['friction', '--mu', '0.3', '--time', '12', '--average', '10',
+                    '--target-error', '0.01', '--step', '6', '--longest', '20'])
+        self.assertEqual(len(self.calls('mu0.3_u1.25')), 2)        # 12, then 18; 24 > 20

@@ -4,6 +4,8 @@ stops on a bad option with one line naming it and nothing else on stderr
 (status 2), and reads its options with the defaults its documentation
 gave before the front ends were argparse (the values below are those of
 the usage texts, not read from the code)."""
+import contextlib
+import io
 import json
 import os
 import shutil
@@ -132,6 +134,12 @@ class Defaults(unittest.TestCase):
         self.assertEqual((o['u'], o['mu'], o['jobs'], o['n'], o['overrides']),
                          ([1.25], [0.02, 0.063, 0.1, 0.2, 0.3], 2, '1500',
                           ['He=152', 'e=0.8']))
+        self.assertIsNone(o['target_error'])
+        o = circulation.parse(['friction', '--target-error', '0.05'])
+        self.assertEqual((o['target_error'], o['step'], o['longest']), (0.05, 6.0, 60.0))
+        for bad in (['--target-error', '5'], ['--target-error', '0.05', '--step', '0']):
+            with self.assertRaises(SystemExit), contextlib.redirect_stderr(io.StringIO()):
+                circulation.parse(['friction'] + bad)
 
     def test_spout_height(self):
         o = spoutheight.parse(['--runs', 'u2_hot,u1.4', 'He=152'])

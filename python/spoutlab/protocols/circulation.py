@@ -8,7 +8,10 @@ break through the packed bed at the --kick velocity, then spout at u_s
 until --time seconds, W_s averaged over the last --average seconds.  Runs
 that differ only in u_s share one settled bed.  Finished runs are kept, so
 running the command again after an interruption continues with the missing
-points (an interrupted one starts again, on its settled bed if it had one).
+points: an interrupted one from its last write (the case's Allrun -c), or
+again on its settled bed if spoutFoam had not started.  A longer --time
+with the same averaging start (--time minus --average) continues the
+finished runs, e.g. --time 30 --average 28 after --time 12 --average 10.
 
 Results: circulation_<study>.csv / .png / .txt, and circulation_<study>.json, the
 table's numbers (read by protocols/results)
@@ -19,6 +22,7 @@ import json
 import math
 import os
 import re
+import shlex
 import shutil
 import subprocess
 import sys
@@ -78,8 +82,20 @@ def parse(argv):
     p.add_argument('--mu', type=cli.numbers, default=[0.02, 0.063, 0.1, 0.2, 0.3],
                    metavar='MU,...', help='friction coefficients of the friction study '
                                           '(default 0.02,0.063,0.1,0.2,0.3)')
+    p.add_argument('--target-error', type=float, metavar='F',
+                   help="continue each run by --step seconds, its averaging start kept, "
+                        "until W_s's standard error is below F of W_s (e.g. 0.05), at most "
+                        "to --longest (default: each run to --time)")
+    p.add_argument('--step', type=float, default=6.0, metavar='T',
+                   help='with --target-error: seconds added at a time (default %(default)s)')
+    p.add_argument('--longest', type=float, default=60.0, metavar='T',
+                   help='with --target-error: the longest run [s] (default %(default)s)')
     run_options(p)
     o = vars(cli.parse(p, argv))
+    if o['target_error'] is not None and not 0 < o['target_error'] < 1:
+        p.error('--target-error: a fraction of W_s between 0 and 1, got %g' % o['target_error'])
+    if o['step'] <= 0:
+        p.error('--step: a positive time, got %g' % o['step'])
     if o['u'] is None:
         o['u'] = [1.25] if o['study'] == 'friction' else [1.4, 1.6, 1.8, 2.0, 2.2]
     return o
@@ -126,10 +142,19 @@ def run_point(o, label, u, overrides, settled, entries=()):
     entries = [('constant/couplingProperties', 'lostParticles', 'delete')] + list(entries)
     bed = os.path.join(work, 'DEM', 'settled.restart')
     key = settle_key(o, overrides)
-    if os.path.isfile(result):
+    cmd = ['./Allrun', '-u', str(u), '-k', o['kick'], '-t', str(o['time']),
+           '-a', str(o['average']), '-np', str(o['np'])] \
+        + (['-n', o['n']] if o['n'] else []) + o['overrides'] + overrides
+    if os.path.isfile(result) and covers(recorded_options(work), cmd[1:]):
         settled.setdefault(key, bed)
         return work
-    if os.path.isdir(work) and not finished(work):
+    # a run that got as far as spoutFoam goes on from its last write (the
+    # Allrun's -c: interrupted, or finished and now asked for a later end
+    # with the same averaging start); one that did not starts again
+    continued = os.path.isfile(os.path.join(work, 'log.spoutFoam'))
+    if continued:
+        cmd.insert(1, '-c')
+    elif os.path.isdir(work):
         restart_clean(work, bed)
     if not os.path.isdir(work):
         os.makedirs('runs', exist_ok=True)
@@ -142,13 +167,12 @@ def run_point(o, label, u, overrides, settled, entries=()):
     if key in settled and os.path.isfile(settled[key]) and not os.path.isfile(bed):
         os.makedirs(os.path.dirname(bed), exist_ok=True)
         shutil.copy(settled[key], bed)
-    cmd = ['./Allrun', '-u', str(u), '-k', o['kick'], '-t', str(o['time']),
-           '-a', str(o['average']), '-np', str(o['np'])] \
-        + (['-n', o['n']] if o['n'] else []) + o['overrides'] + overrides
     print('circulation: %s: %s' % (label, ' '.join(cmd[1:])), flush=True)
-    with open(os.path.join(work, 'log.Allrun'), 'w') as log:
+    with open(os.path.join(work, 'log.Allrun'), 'a' if continued else 'w') as log:
         if subprocess.call(cmd, cwd=work, stdout=log, stderr=subprocess.STDOUT) != 0:
-            sys.exit('circulation: run %s failed, see %s/log.Allrun' % (label, work))
+            last = open(os.path.join(work, 'log.Allrun')).read().strip().splitlines()[-1:]
+            sys.exit('circulation: run %s failed (%s), see %s/log.Allrun'
+                     % (label, last[0] if last else 'no output', work))
     settled.setdefault(key, bed)
     return work
 
@@ -179,11 +203,68 @@ def set_entries(path, entries):
     open(path, 'w').write(text)
 
 
-def finished(work):
-    """Whether the case's Allrun got to its evaluate step in work (it
-    records that in log.options; etc/caseFunctions)."""
+def window(words):
+    """(end, averaging start) [s] of the case's Allrun options (words), its
+    defaults -t 3 -a 1.8 where absent."""
+    value = dict(zip(words, words[1:]))
+    end = float(value.get('-t', 3))
+    return end, max(0.0, end - float(value.get('-a', 1.8)))
+
+
+def covers(recorded, asked):
+    """Whether a finished run's options (recorded) give what the asked ones
+    would: the same but for -t and -a, the same averaging start, and an end
+    at or after the asked one (a run continued past it, --target-error)."""
+    if recorded is None:
+        return False
+
+    def others(words):
+        return [w for i, w in enumerate(words)
+                if w not in ('-t', '-a') and (i == 0 or words[i - 1] not in ('-t', '-a'))]
+    (end, start), (asked_end, asked_start) = window(recorded), window(asked)
+    return (others(recorded) == others(asked) and abs(start - asked_start) < 1e-9
+            and end >= asked_end - 1e-9)
+
+
+def extend(o, pts, entries=lambda p: ()):
+    """--target-error: the points whose W_s standard error is above it (or
+    that have none: a window shorter than two blocks) continue by --step
+    seconds from where they ended, their averaging start kept, --jobs at a
+    time, until each is below it or at --longest."""
+    if o['target_error'] is None:
+        return
+    while True:
+        todo = []
+        for p in pts:
+            work = os.path.join('runs', p[0])
+            ws, err = w_s(work), w_s_error(work)
+            end, start = window(recorded_options(work))
+            if (err is None or err > o['target_error'] * ws) \
+                    and end + o['step'] <= o['longest'] + 1e-9:
+                print('circulation: %s: W_s = %.4f kg/s%s, above --target-error %g: on to %g s'
+                      % (p[0], ws, error_text(ws, err), o['target_error'], end + o['step']),
+                      flush=True)
+                todo.append((p, dict(o, time=round(end + o['step'], 9),
+                                     average=round(end + o['step'] - start, 9))))
+        if not todo:
+            return
+        with concurrent.futures.ThreadPoolExecutor(o['jobs']) as pool:
+            list(pool.map(lambda t: run_point(t[1], t[0][0], t[0][1], t[0][2], {},
+                                              entries(t[0])), todo))
+
+
+def recorded_options(work):
+    """The options of the case's Allrun that made work, as words (its
+    log.options; etc/caseFunctions startCase), if it got to evaluate; else
+    None."""
     path = os.path.join(work, 'log.options')
-    return os.path.isfile(path) and any(line.startswith('evaluate:') for line in open(path))
+    if not os.path.isfile(path):
+        return None
+    lines = open(path).read().splitlines()
+    if not any(line.startswith('evaluate:') for line in lines):
+        return None
+    return next((shlex.split(line[len('options:'):]) for line in lines
+                 if line.startswith('options:')), None)
 
 
 def restart_clean(work, bed):
@@ -234,12 +315,13 @@ def error_text(ws, err):
 def main(argv):
     o = parse(argv)
     run_all(o, points(o))
+    extend(o, points(o))
     table = []
     for label, u, _, He, mu in points(o):
         work = os.path.join('runs', label)
         ws, err, lost = w_s(work), w_s_error(work), caserun.lost_particles(work)
         ref = eq15(u, He) if He is not None else eq16(mu)
-        table.append((label, u, He, mu, ws, ref, err, lost))
+        table.append((label, u, He, mu, ws, ref, err, lost, window(recorded_options(work))))
         print('circulation: %s: W_s = %.4f kg/s%s (paper eq %s: %.4f)%s'
               % (label, ws, error_text(ws, err), '15' if He is not None else '16', ref,
                  caserun.lost_text(lost)), flush=True)
@@ -254,11 +336,20 @@ def main(argv):
                                                        '' if row[6] is None else '%.6g' % row[6],
                                                        row[7]))
     kick = o['kick'].split(',')
-    text = '# %g s per run (spin-up at %s m/s for %s s), W_s averaged over the last %g s\n' \
-        % (o['time'], kick[0], kick[1], o['average'])
-    text += '\n'.join('%-18s u_s = %.2f m/s  W_s = %.4f kg/s%s  correlation %.4f kg/s%s'
+    windows = set(r[8] for r in table)
+    if len(windows) == 1:
+        end, start = table[0][8]
+        text = '# %g s per run (spin-up at %s m/s for %s s), W_s averaged over the last %g s\n' \
+            % (end, kick[0], kick[1], round(end - start, 9))
+    else:   # runs continued to their --target-error
+        text = ('# spin-up at %s m/s for %s s; W_s averaged from t = %s s to each run\'s end%s\n'
+                % (kick[0], kick[1], '/'.join('%g' % s for s in sorted(set(w[1] for w in windows))),
+                   '' if o['target_error'] is None else ' (--target-error %g)' % o['target_error']))
+    text += '\n'.join('%-18s u_s = %.2f m/s  W_s = %.4f kg/s%s  correlation %.4f kg/s%s%s'
                       % (r[0], r[1], r[4], error_text(r[4], r[6]), r[5],
-                         caserun.lost_text(r[7])) for r in table) + '\n'
+                         caserun.lost_text(r[7]),
+                         '' if len(windows) == 1 else '  (to %g s)' % r[8][0])
+                      for r in table) + '\n'
     open(name + '.txt', 'w').write(text)
     sys.stdout.write(text)
     # the table's numbers as it prints them, for protocols/results
@@ -268,7 +359,8 @@ def main(argv):
                                'W_s_kg_s': float('%.4f' % r[4]),
                                'W_s_err_kg_s': None if r[6] is None else float('%.3g' % r[6]),
                                'correlation_kg_s': float('%.4f' % r[5]),
-                               'particles_lost': r[7]} for r in table]},
+                               'particles_lost': r[7], 'time_s': r[8][0],
+                               'average_s': round(r[8][0] - r[8][1], 9)} for r in table]},
                   f, indent=1)
         f.write('\n')
     if o['study'] == 'velocity':

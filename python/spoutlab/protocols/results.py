@@ -858,6 +858,7 @@ def circulation_rows(case, study):
         table = read_json(case, 'circulation_%s.json' % study,
                           'protocols/circulation %s with its options' % study)
         how = table['settings']
+        various = len(set(p.get('time_s') for p in table['points'])) > 1
         for p in table['points']:
             label, ws, ref = p['label'], p['W_s_kg_s'], p['correlation_kg_s']
             err = p.get('W_s_err_kg_s')
@@ -867,7 +868,8 @@ def circulation_rows(case, study):
                             '' if err is None else ', standard error %.3f (%.1f %%)'
                             % (err, 100 * err / ws)) + caserun.lost_text(p.get('particles_lost')),
                          '%.3f kg/s (eq %s)' % (ref, '15' if study == 'velocity' else '16'),
-                         'u_s = %.2f m/s; %s' % (p['u_m_s'], how),
+                         'u_s = %.2f m/s; %s%s' % (p['u_m_s'], how, '; this run to %g s'
+                                                   % p['time_s'] if various else ''),
                          '%.2f h' % (wall_time(os.path.join(case, 'runs', label)) / 3600)))
             if study == 'friction' and ws > 0:
                 mus.append(float(label[2:label.index('_')]))
