@@ -387,6 +387,19 @@ open('circulation.csv', 'w').write('quantity,height [mm],value [kg/s]\\n'
                     '--target-error', '0.05'])
         self.assertEqual(len(self.calls('mu0.3_u1.25')), 3)
 
+    def test_an_interrupted_continuation_goes_on_to_its_own_end(self):
+        from spoutlab.protocols import circulation as c
+        with contextlib.redirect_stdout(io.StringIO()):
+            c.main(['friction', '--mu', '0.3', '--time', '12', '--average', '10'])
+        work = os.path.join('runs', 'mu0.3_u1.25')
+        # killed on its way to 18 s: startCase wrote the options, evaluate did not run
+        open(os.path.join(work, 'log.options'), 'w').write(
+            '# options\noptions: -u 1.25 -k 2.0,1.0 -t 18.0 -a 16.0 -np 1 mu=0.3\n')
+        with contextlib.redirect_stdout(io.StringIO()):
+            c.main(['friction', '--mu', '0.3', '--time', '12', '--average', '10'])
+        self.assertEqual(self.calls('mu0.3_u1.25')[-1],
+                         '-c -u 1.25 -k 2.0,1.0 -t 18.0 -a 16.0 -np 1 mu=0.3')
+
     def test_longest_stops_it(self):
         from spoutlab.protocols import circulation as c
         with contextlib.redirect_stdout(io.StringIO()):

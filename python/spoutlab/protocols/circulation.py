@@ -145,14 +145,19 @@ def run_point(o, label, u, overrides, settled, entries=()):
     cmd = ['./Allrun', '-u', str(u), '-k', o['kick'], '-t', str(o['time']),
            '-a', str(o['average']), '-np', str(o['np'])] \
         + (['-n', o['n']] if o['n'] else []) + o['overrides'] + overrides
-    if os.path.isfile(result) and covers(recorded_options(work), cmd[1:]):
+    done = recorded_options(work)
+    if os.path.isfile(result) and covers(done, cmd[1:]):
         settled.setdefault(key, bed)
         return work
     # a run that got as far as spoutFoam goes on from its last write (the
     # Allrun's -c: interrupted, or finished and now asked for a later end
-    # with the same averaging start); one that did not starts again
+    # with the same averaging start; an interrupted continuation to its own
+    # end); one that did not starts again
     continued = os.path.isfile(os.path.join(work, 'log.spoutFoam'))
     if continued:
+        started = recorded_options(work, finished=False)
+        if done is None and covers(started, cmd[1:]):
+            cmd[1:] = started
         cmd.insert(1, '-c')
     elif os.path.isdir(work):
         restart_clean(work, bed)
@@ -253,15 +258,15 @@ def extend(o, pts, entries=lambda p: ()):
                                               entries(t[0])), todo))
 
 
-def recorded_options(work):
+def recorded_options(work, finished=True):
     """The options of the case's Allrun that made work, as words (its
-    log.options; etc/caseFunctions startCase), if it got to evaluate; else
-    None."""
+    log.options; etc/caseFunctions startCase), if it got to evaluate (or
+    only started, finished False); else None."""
     path = os.path.join(work, 'log.options')
     if not os.path.isfile(path):
         return None
     lines = open(path).read().splitlines()
-    if not any(line.startswith('evaluate:') for line in lines):
+    if finished and not any(line.startswith('evaluate:') for line in lines):
         return None
     return next((shlex.split(line[len('options:'):]) for line in lines
                  if line.startswith('options:')), None)
