@@ -317,19 +317,10 @@ def error_text(ws, err):
     return '' if err is None else ' +- %.4f (%.1f %%)' % (err, 100 * err / ws if ws else float('nan'))
 
 
-def main(argv):
-    o = parse(argv)
-    run_all(o, points(o))
-    extend(o, points(o))
-    table = []
-    for label, u, _, He, mu in points(o):
-        work = os.path.join('runs', label)
-        ws, err, lost = w_s(work), w_s_error(work), caserun.lost_particles(work)
-        ref = eq15(u, He) if He is not None else eq16(mu)
-        table.append((label, u, He, mu, ws, ref, err, lost, window(recorded_options(work))))
-        print('circulation: %s: W_s = %.4f kg/s%s (paper eq %s: %.4f)%s'
-              % (label, ws, error_text(ws, err), '15' if He is not None else '16', ref,
-                 caserun.lost_text(lost)), flush=True)
+def write_table(o, table):
+    """circulation_<study>.csv, .txt and .json from the table's rows (label,
+    u_s, He, mu, W_s, correlation, standard error, particles lost, (end,
+    averaging start)); returns the files' stem."""
     name = 'circulation_%s' % o['study']
     with open(name + '.csv', 'w') as f:
         f.write('run,superficial velocity [m/s],He [mm],friction coefficient,'
@@ -368,6 +359,23 @@ def main(argv):
                                'average_s': round(r[8][0] - r[8][1], 9)} for r in table]},
                   f, indent=1)
         f.write('\n')
+    return name
+
+
+def main(argv):
+    o = parse(argv)
+    run_all(o, points(o))
+    extend(o, points(o))
+    table = []
+    for label, u, _, He, mu in points(o):
+        work = os.path.join('runs', label)
+        ws, err, lost = w_s(work), w_s_error(work), caserun.lost_particles(work)
+        ref = eq15(u, He) if He is not None else eq16(mu)
+        table.append((label, u, He, mu, ws, ref, err, lost, window(recorded_options(work))))
+        print('circulation: %s: W_s = %.4f kg/s%s (paper eq %s: %.4f)%s'
+              % (label, ws, error_text(ws, err), '15' if He is not None else '16', ref,
+                 caserun.lost_text(lost)), flush=True)
+    name = write_table(o, table)
     if o['study'] == 'velocity':
         sc.plot(name + '.png', '''
 set title "Particle circulation rate vs gas velocity (Fig 6)"
