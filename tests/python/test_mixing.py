@@ -408,7 +408,7 @@ class Candidates(unittest.TestCase):
             os.makedirs('0.orig')
             os.makedirs('constant')
             with open('constant/couplingProperties', 'w') as f:
-                f.write('dragModel Gidaspow;\n')
+                f.write('dragModel Gidaspow;\nlostParticles stop;\n')   # the protocols set delete
             os.makedirs('elsewhere')
             with open('elsewhere/settled.restart', 'w') as f:
                 f.write('the bed\n')
