@@ -41,13 +41,22 @@ def function_object_file(case, name, filename):
     return [os.path.join(base, t, filename) for t in times]
 
 
+def earlier(t, t0):
+    """Whether time t lies before t0 by more than rounding: a restart adds its
+    time steps to the written start time, so the same instant may come out a
+    few units in the last place away from the interrupted run's value."""
+    return t < t0 - 1e-9 * max(abs(t0), 1e-6)
+
+
 def read_function_object(case, name, filename):
+    """Rows of a function object's files in every time directory; a restart's
+    rows replace those the interrupted run wrote from the restart's first time."""
     header, rows = {}, []
     for path in function_object_file(case, name, filename):
         h, r = read_dat(path)
         header.update(h)
         if rows and r:
-            rows = [row for row in rows if row[0] < r[0][0]]
+            rows = [row for row in rows if earlier(row[0], r[0][0])]
         rows.extend(r)
     return header, rows
 
@@ -62,7 +71,7 @@ def read_coupling_log(case):
     with open(os.path.join(case, 'postProcessing', 'coupling.csv')) as f:
         for row in csv.DictReader(f):
             row = {k: float(v) for k, v in row.items()}
-            while rows and rows[-1]['time [s]'] >= row['time [s]']:
+            while rows and not earlier(rows[-1]['time [s]'], row['time [s]']):
                 rows.pop()
             rows.append(row)
     return rows

@@ -1,7 +1,10 @@
 """What the case layer does with a picture it cannot draw (spoutlab.casefiles
 plot, Plot, plots_text): the summary names it and says why, instead of
 leaving it out of the list; the spouted bed's heat-transfer picture
-without a particle in its band is one of them."""
+without a particle in its band is one of them.  And how it joins the rows
+of a run killed and restarted: the restart's rows replace the killed run's
+from the same instant, though the two write it a few units in the last
+place apart."""
 import contextlib
 import io
 import os
@@ -67,6 +70,36 @@ class Pictures(InDirectory):
         self.assertFalse(os.path.exists('heatTransfer.png'))
         with open('heatProfiles.csv') as f:
             self.assertEqual(f.read(), 'x/R_d,h [W/m2/K],Re,samples\n')
+
+
+class RestartedRows(InDirectory):
+    # a probe row the killed run wrote at 7.5 ms, and the restart's same row:
+    # the restart adds its steps to the written 0.006, the killed run to 0
+    killed = ['0.0059999999999999993 18163.0', '0.0074999999999999989 15115.1']
+    restarted = ['0.0074999999999999997 15115.1', '0.0089999999999999993 12956.5']
+
+    def write(self, path, lines):
+        os.makedirs(os.path.dirname(path), exist_ok=True)
+        with open(path, 'w') as f:
+            f.write('# Probe 0 (0 0.02 0.011)\n# Time\n' + '\n'.join(lines) + '\n')
+
+    def test_a_probe_row_is_not_counted_twice(self):
+        self.write('postProcessing/probe/0/p', self.killed)
+        self.write('postProcessing/probe/0.006/p', self.restarted)
+        _, rows = sc.read_function_object('.', 'probe', 'p')
+        self.assertEqual([r[1] for r in rows], [18163.0, 15115.1, 12956.5])
+
+    def test_a_coupling_row_is_not_counted_twice(self):
+        os.makedirs('postProcessing')
+        with open('postProcessing/coupling.csv', 'w') as f:
+            f.write('time [s],x\n' + '\n'.join(r.replace(' ', ',')
+                                                for r in self.killed + self.restarted) + '\n')
+        self.assertEqual([r['x'] for r in sc.read_coupling_log('.')], [18163.0, 15115.1, 12956.5])
+
+    def test_rows_a_step_apart_are_both_kept(self):
+        self.write('postProcessing/probe/0/p', ['0.0074 1.0'])
+        self.write('postProcessing/probe/0.0074/p', ['0.0075 2.0'])
+        self.assertEqual(len(sc.read_function_object('.', 'probe', 'p')[1]), 2)
 
 
 if __name__ == '__main__':
