@@ -94,6 +94,7 @@ SETTLING = "re:^case\\.settlingParticle$"     # terminal velocity under Gidaspow
 MIN_FLUIDISATION = "re:^case\\.minFluidisation$"  # bed lifted at u_mf: drag plus -V grad p
 FOAM = "re:^foam\\."                          # the divided model on real meshes
 EVERY_LAYER = "re:^case\\.packedBed$"  # every layer, floor and surface (dragVelocity flux)
+COARSE = "re:^case\\.(packedBed|minFluidisation)\\.cg3$"  # parcels against their particles' laws
 
 FAULTS = [
     Fault("beta x 1.1",
@@ -128,6 +129,13 @@ FAULTS = [
                 "(HbyA - rAU*voidfraction*fvc::grad(p))().primitiveField();")],
           UNIT + [EVERY_LAYER],
           "with dragVelocity flux the gas leaves its solve with the cell-centred U, which the drag then takes"),
+    Fault("laws at the parcel's d",
+          [Edit("coupling/Particle.hpp",
+                r"(double\s+diameter\s*\(\s*\)\s*const\s*\{\s*return\s+2\.0\s*\*\s*radius)"
+                r"\s*/\s*coarseGraining\s*;",
+                r"\g<1>;")],
+          UNIT + [COARSE],
+          "drag, heat and water of a parcel from its own diameter cg d (the reference couplings' bug)"),
     Fault("kinetics k5 x 1.05",
           [Edit("process_cases/kinetics/*mechanism*.yaml",
                 r"\{\s*id:\s*k5\s*,[^}\n]*?\bk:\s*(?P<value>[0-9.]+(?:[eE][-+]?[0-9]+)?)",
