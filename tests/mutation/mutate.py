@@ -133,6 +133,10 @@ FAULTS = [
           [Edit("coupling/Particle.hpp",
                 r"(double\s+diameter\s*\(\s*\)\s*const\s*\{\s*return\s+2\.0\s*\*\s*radius)"
                 r"\s*/\s*coarseGraining\s*;",
+                r"\g<1>;"),
+           Edit("coupling/Particle.hpp",   # the drag's and the heat's d: 6 V / surface
+                r"(double\s+surface\s*\(\s*\)\s*const\s*\{[^}]*radius\s*\*\s*radius)"
+                r"\s*\*\s*coarseGraining\s*;",
                 r"\g<1>;")],
           UNIT + [COARSE],
           "drag, heat and water of a parcel from its own diameter cg d (the reference couplings' bug)"),
