@@ -96,9 +96,10 @@ class RestartedRows(InDirectory):
                                                 for r in self.killed + self.restarted) + '\n')
         self.assertEqual([r['x'] for r in sc.read_coupling_log('.')], [18163.0, 15115.1, 12956.5])
 
-    def test_rows_a_step_apart_are_both_kept(self):
-        self.write('postProcessing/probe/0/p', ['0.0074 1.0'])
-        self.write('postProcessing/probe/0.0074/p', ['0.0075 2.0'])
+    def test_rows_a_short_step_apart_are_both_kept(self):
+        # 1e-7 s, far below any time step the cases take, is not rounding
+        self.write('postProcessing/probe/0/p', ['0.0074999 1.0'])
+        self.write('postProcessing/probe/0.0075/p', ['0.0075 2.0'])
         self.assertEqual(len(sc.read_function_object('.', 'probe', 'p')[1]), 2)
 
 
