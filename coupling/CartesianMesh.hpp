@@ -26,6 +26,7 @@ public:
     double cellVolume(label cell) const override;
     label findCell(const Vec3& p, label hint) const override;
     bool sphereInsideCell(label cell, const Vec3& centre, double radius) const override;
+    using CellLocator::clearance; // and the samples' (from the point's)
     double clearance(const Vec3& p, label cell) const override;
 
     label nx() const { return static_cast<label>(xf_.size()) - 1; }

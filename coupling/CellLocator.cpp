@@ -1,5 +1,7 @@
 #include "CellLocator.hpp"
 
+#include <algorithm>
+
 namespace spoutlab
 {
 
@@ -18,6 +20,17 @@ void CellLocator::findCells(const Vec3& centre, double radius, const std::vector
 double CellLocator::clearance(const Vec3&, label) const
 {
     return 0.0;
+}
+
+double CellLocator::clearance(const Vec3& centre, double radius, const std::vector<Vec3>& units,
+                              const std::vector<label>& cells) const
+{
+    double smallest = 1e300;
+    for (std::size_t k = 0; k < units.size() && smallest > 0; ++k)
+    {
+        smallest = std::min(smallest, clearance(centre + units[k] * radius, cells[k]));
+    }
+    return smallest;
 }
 
 void CellLocator::complete(std::vector<double>&, int) const {}

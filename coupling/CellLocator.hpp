@@ -43,6 +43,13 @@ public:
     // moved less; 0, the default, is always allowed and means "look again".
     virtual double clearance(const Vec3& p, label cell) const;
 
+    // The smallest clearance of the points centre + radius * units[k] in
+    // their cells[k] (findCells' answer), 0 as soon as one of them has none:
+    // how far a divided particle may move and keep its cells. The default
+    // asks clearance() point by point.
+    virtual double clearance(const Vec3& centre, double radius, const std::vector<Vec3>& units,
+                             const std::vector<label>& cells) const;
+
     // Parallel runs. The cells of neighbouring ranks that this rank's
     // particles reach (halo cells) are numbered after its own, and nCells()
     // counts both; findCell() and cellVolume() know them. complete() takes a

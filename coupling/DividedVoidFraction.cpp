@@ -70,10 +70,7 @@ double DividedVoidFraction::distribute(const CellLocator& mesh, const Particle& 
     // so a linear search of row is the fastest lookup.
     thread_local std::vector<label> cells; // reused: one call per particle and step
     mesh.findCells(p.x, p.radius, samples_, centreCell, cells);
-    for (std::size_t k = 0; k < cells.size() && clearance > 0; ++k)
-    {
-        clearance = std::min(clearance, mesh.clearance(p.x + samples_[k] * p.radius, cells[k]));
-    }
+    if (clearance > 0) clearance = std::min(clearance, mesh.clearance(p.x, p.radius, samples_, cells));
     for (label cell : cells)
     {
         if (cell < 0) cell = centreCell;

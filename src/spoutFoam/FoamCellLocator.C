@@ -442,6 +442,46 @@ double FoamCellLocator::clearance(const Vec3& p, label cell) const
 }
 
 
+double FoamCellLocator::clearance
+(
+    const Vec3& centre, double radius, const std::vector<Vec3>& units,
+    const std::vector<label>& cells
+) const
+{
+    if (!onLattice()) return CellLocator::clearance(centre, radius, units, cells);
+    // clearance(point, cell) point by point, in lattice coordinates taken
+    // once from the centre's (they differ from the point's own by
+    // round-off, far below rowLasts' margin); floor by truncation, the
+    // cheaper of the two, corrected below zero
+    const Lattice& L = lattice_;
+    const double xc[3] = {centre.x, centre.y, centre.z};
+    double tc[3], reach[3];
+    for (int a = 0; a < 3; ++a)
+    {
+        tc[a] = (xc[a] - L.origin[a])*L.inverse[a];
+        reach[a] = radius*L.inverse[a];
+    }
+    double smallest = 1e300;
+    for (std::size_t k = 0; k < units.size() && smallest > 0; ++k)
+    {
+        const double u[3] = {units[k].x, units[k].y, units[k].z};
+        double inside = 1e300, beyond = 0;
+        for (int a = 0; a < 3; ++a)
+        {
+            const double t = tc[a] + reach[a]*u[a];
+            const double out = std::max(-t, t - double(L.n[a])) - 1e-9;
+            beyond = std::max(beyond, out*L.spacing[a]);
+            double below = double(long(t));
+            if (below > t) below -= 1;
+            const double f = t - below;
+            inside = std::min(inside, std::min(f, 1 - f)*L.spacing[a]);
+        }
+        smallest = std::min(smallest, beyond > 0 ? beyond : inside);
+    }
+    return smallest;
+}
+
+
 bool FoamCellLocator::sphereInsideCell
 (
     label cell, const Vec3& centre, double radius

@@ -434,6 +434,46 @@ TEST_F(LShapedMesh, SamplePointsOfASphereAreInFindCellsCells)
     EXPECT_GT(cut, 5000);   // many sample points left the centre's cell
 }
 
+TEST_F(LShapedMesh, ASpheresSamplePointsClearanceIsTheirSmallest)
+{
+    // the lattice's clearance of all sample points at once against the
+    // point-by-point one, for spheres cut by faces, by the missing square
+    // and by the outer boundary: equal to round-off (positions in lattice
+    // coordinates taken once from the centre's)
+    const spoutlab::FoamCellLocator locator(*mesh_);
+    ASSERT_TRUE(locator.onLattice());
+    std::mt19937 rng(17);
+    std::uniform_real_distribution<double> u(0.0, 1.0), direction(-1.0, 1.0);
+    std::vector<spoutlab::Vec3> units;
+    while (units.size() < 24)
+    {
+        const spoutlab::Vec3 v{direction(rng), direction(rng), direction(rng)};
+        const double m = spoutlab::mag(v);
+        if (m > 0.1 && m <= 1) units.push_back(v*(u(rng)/m));
+    }
+    std::vector<spoutlab::label> cells;
+    int outside = 0, open = 0;
+    for (int n = 0; n < 3000; ++n)
+    {
+        const spoutlab::Vec3 x{2*u(rng), u(rng), 2*u(rng)};
+        const spoutlab::label centre = locator.findCell(x, -1);
+        if (centre < 0) continue;
+        const double radius = 0.2*u(rng);
+        locator.findCells(x, radius, units, centre, cells);
+        double smallest = 1e300;
+        for (std::size_t k = 0; k < units.size(); ++k)
+        {
+            smallest = std::min(smallest, locator.clearance(x + units[k]*radius, cells[k]));
+            outside += cells[k] < 0;
+        }
+        EXPECT_NEAR(locator.clearance(x, radius, units, cells), smallest, 1e-12)
+            << x.x << ' ' << x.y << ' ' << x.z << ' ' << radius;
+        open += smallest > 1e-3;
+    }
+    EXPECT_GT(outside, 100);   // sample points in the hole and outside
+    EXPECT_GT(open, 1000);     // and clearances worth keeping a row for
+}
+
 TEST_F(LShapedMesh, APointMovedLessThanItsClearanceKeepsItsCell)
 {
     // in a cell, in the missing square and outside the mesh: moved less
