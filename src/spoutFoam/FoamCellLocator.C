@@ -423,22 +423,34 @@ bool FoamCellLocator::findCellsOnLattice
 }
 
 
+double FoamCellLocator::latticeClearance(const double t[3]) const
+{
+    // in boxes (a cell's box faces are its face planes, to round-off);
+    // latticeCell takes points up to 1e-9 box beyond the lattice as on it.
+    // Floor by truncation, the cheaper, corrected below zero.
+    const Lattice& L = lattice_;
+    double inside = 1e300, beyond = 0;
+    for (int a = 0; a < 3; ++a)
+    {
+        const double out = std::max(-t[a], t[a] - double(L.n[a])) - 1e-9;
+        beyond = std::max(beyond, out*L.spacing[a]);
+        double below = double(long(t[a]));
+        if (below > t[a]) below -= 1;
+        const double f = t[a] - below;
+        inside = std::min(inside, std::min(f, 1 - f)*L.spacing[a]);
+    }
+    return beyond > 0 ? beyond : inside;
+}
+
+
 double FoamCellLocator::clearance(const Vec3& p, label cell) const
 {
     if (!onLattice()) return cell >= 0 ? std::max(0.0, depthInside(p, cell)) : 0;
     const Lattice& L = lattice_;
     const double x[3] = {p.x, p.y, p.z};
-    double inside = 1e300, beyond = 0;
-    for (int a = 0; a < 3; ++a)
-    {
-        // in boxes (a cell's box faces are its face planes, to round-off);
-        // latticeCell takes points up to 1e-9 box beyond the lattice as on it
-        const double t = (x[a] - L.origin[a])*L.inverse[a];
-        const double out = std::max(-t, t - double(L.n[a])) - 1e-9;
-        beyond = std::max(beyond, out*L.spacing[a]);
-        inside = std::min(inside, std::min(t - std::floor(t), std::ceil(t) - t)*L.spacing[a]);
-    }
-    return beyond > 0 ? beyond : inside;
+    double t[3];
+    for (int a = 0; a < 3; ++a) t[a] = (x[a] - L.origin[a])*L.inverse[a];
+    return latticeClearance(t);
 }
 
 
@@ -451,8 +463,7 @@ double FoamCellLocator::clearance
     if (!onLattice()) return CellLocator::clearance(centre, radius, units, cells);
     // clearance(point, cell) point by point, in lattice coordinates taken
     // once from the centre's (they differ from the point's own by
-    // round-off, far below rowLasts' margin); floor by truncation, the
-    // cheaper of the two, corrected below zero
+    // round-off, far below rowLasts' margin)
     const Lattice& L = lattice_;
     const double xc[3] = {centre.x, centre.y, centre.z};
     double tc[3], reach[3];
@@ -465,18 +476,8 @@ double FoamCellLocator::clearance
     for (std::size_t k = 0; k < units.size() && smallest > 0; ++k)
     {
         const double u[3] = {units[k].x, units[k].y, units[k].z};
-        double inside = 1e300, beyond = 0;
-        for (int a = 0; a < 3; ++a)
-        {
-            const double t = tc[a] + reach[a]*u[a];
-            const double out = std::max(-t, t - double(L.n[a])) - 1e-9;
-            beyond = std::max(beyond, out*L.spacing[a]);
-            double below = double(long(t));
-            if (below > t) below -= 1;
-            const double f = t - below;
-            inside = std::min(inside, std::min(f, 1 - f)*L.spacing[a]);
-        }
-        smallest = std::min(smallest, beyond > 0 ? beyond : inside);
+        const double t[3] = {tc[0] + reach[0]*u[0], tc[1] + reach[1]*u[1], tc[2] + reach[2]*u[2]};
+        smallest = std::min(smallest, latticeClearance(t));
     }
     return smallest;
 }
