@@ -398,6 +398,20 @@ TEST_F(LShapedMesh, PointsOnFacesGoToTheHintOrAnAdjacentCell)
     }
 }
 
+// n sample points of a unit sphere: random directions, at random depths
+std::vector<spoutlab::Vec3> randomUnits(std::mt19937& rng, std::size_t n)
+{
+    std::uniform_real_distribution<double> u(0.0, 1.0), direction(-1.0, 1.0);
+    std::vector<spoutlab::Vec3> units;
+    while (units.size() < n)
+    {
+        const spoutlab::Vec3 v{direction(rng), direction(rng), direction(rng)};
+        const double m = spoutlab::mag(v);
+        if (m > 0.1 && m <= 1) units.push_back(v*(u(rng)/m));
+    }
+    return units;
+}
+
 TEST_F(LShapedMesh, SamplePointsOfASphereAreInFindCellsCells)
 {
     // findCells looks a particle's sample points up from the centre's box;
@@ -405,14 +419,8 @@ TEST_F(LShapedMesh, SamplePointsOfASphereAreInFindCellsCells)
     // spheres cut by faces, by the missing square and by the outer boundary
     const spoutlab::FoamCellLocator locator(*mesh_);
     std::mt19937 rng(11);
-    std::uniform_real_distribution<double> u(0.0, 1.0), direction(-1.0, 1.0);
-    std::vector<spoutlab::Vec3> units;
-    while (units.size() < 40)
-    {
-        const spoutlab::Vec3 v{direction(rng), direction(rng), direction(rng)};
-        const double m = std::sqrt(v.x*v.x + v.y*v.y + v.z*v.z);
-        if (m > 0.1 && m <= 1) units.push_back(v*(u(rng)/m));
-    }
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    const std::vector<spoutlab::Vec3> units(randomUnits(rng, 40));
     std::vector<spoutlab::label> cells;
     int cut = 0;
     for (int n = 0; n < 2000; ++n)
@@ -443,14 +451,8 @@ TEST_F(LShapedMesh, ASpheresSamplePointsClearanceIsTheirSmallest)
     const spoutlab::FoamCellLocator locator(*mesh_);
     ASSERT_TRUE(locator.onLattice());
     std::mt19937 rng(17);
-    std::uniform_real_distribution<double> u(0.0, 1.0), direction(-1.0, 1.0);
-    std::vector<spoutlab::Vec3> units;
-    while (units.size() < 24)
-    {
-        const spoutlab::Vec3 v{direction(rng), direction(rng), direction(rng)};
-        const double m = spoutlab::mag(v);
-        if (m > 0.1 && m <= 1) units.push_back(v*(u(rng)/m));
-    }
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    const std::vector<spoutlab::Vec3> units(randomUnits(rng, 24));
     std::vector<spoutlab::label> cells;
     int outside = 0, open = 0;
     for (int n = 0; n < 3000; ++n)
