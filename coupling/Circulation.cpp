@@ -185,6 +185,26 @@ std::array<double, nCirculationRegions> CirculationStatistics::openAtEnd(const s
     return open;
 }
 
+std::array<std::vector<double>, nCirculationRegions + 1>
+CirculationStatistics::censoredAtEnd(const std::vector<double*>& tracks, double tLast, double dt,
+                                     double binWidth, std::size_t bins)
+{
+    std::array<std::vector<double>, nCirculationRegions + 1> open;
+    for (std::vector<double>& h : open) h.assign(std::max<std::size_t>(bins, 1), 0.0);
+    const auto add = [&](std::size_t index, double entry) {
+        // as addResidence bins a completed one: within 1e-9 of a bin below an edge in the upper
+        const auto bin = std::size_t(std::max(0.0, std::floor((tLast - entry + dt) / binWidth + 1e-9)));
+        open[index][std::min(bin, open[index].size() - 1)] += 1;
+    };
+    for (const double* track : tracks)
+    {
+        if (track[0] < 0) continue;
+        if (track[1] >= 0) add(std::size_t(track[0]), track[1]);
+        if (track[2] >= 0) add(std::size_t(cycle), track[2]);
+    }
+    return open;
+}
+
 // Layout: sampleTimes, skipped, entries[4], occupancy[4], openStart[4], seen[4][7],
 // per core (entrainment's, fountain's) occupancy, seen[7], fractions[20], per
 // distribution (5) the moments all, first, second (3 each), then the number

@@ -43,7 +43,12 @@
 // per state: holdup x window = the completed residences + the time of the
 // incomplete first visits that ended in the window (openAtStart) + the time
 // in the window of the visits still open at its end (openAtEnd, from the
-// tracks), each sample counting one sampling interval.
+// tracks), each sample counting one sampling interval. The visits open at the
+// end whose entry is known are also binned by their time so far
+// (censoredAtEnd): with the completed ones, every entry into a state in the
+// window, so that a window shorter than the longest visits still gives
+// their distribution (Kaplan-Meier) where the completed ones alone would
+// keep only the short.
 //
 // Per state, over every sample (particle in the state at a sampling time):
 // the holdup (particles per sampling time) and the mean of what the particle
@@ -194,6 +199,15 @@ public:
     // state, over the tracks given (one rank's particles) [s]
     static std::array<double, nCirculationRegions> openAtEnd(const std::vector<double*>& tracks, double tLast,
                                                              double dt);
+    // The visits open at tLast whose entry lies in the window, per
+    // distribution (the states, then the cycle: since the last spout entry),
+    // by their time so far, tLast - entry + dt, in `bins` bins of binWidth
+    // (longer ones in the last): residences known only to last at least that
+    // long (right-censored), which a window shorter than the longest visits
+    // leaves out of the completed ones and Kaplan-Meier puts back.
+    static std::array<std::vector<double>, nCirculationRegions + 1>
+    censoredAtEnd(const std::vector<double*>& tracks, double tLast, double dt, double binWidth,
+                  std::size_t bins);
 
     // the packed histograms hold at least `bins` bins each (ranks pack to
     // the same length); bins() is this one's longest histogram. Ranks that

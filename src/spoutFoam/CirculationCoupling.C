@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <numeric>
 #include <sstream>
 
 namespace spoutlab
@@ -55,16 +56,31 @@ std::string moments(const Moments& m)
 }
 
 
-std::string residenceEntry(const ResidenceDistribution& d, double binWidth)
+std::string countList(const std::vector<double>& counts)
 {
-    std::string counts;
-    for (std::size_t b = 0; b < d.counts.size(); ++b)
+    std::string list;
+    for (std::size_t b = 0; b < counts.size(); ++b)
     {
-        counts += (b ? ", " : "") + number(d.counts[b]);
+        list += (b ? ", " : "") + number(counts[b]);
     }
-    return "{\"binWidth\": " + number(binWidth) + ", \"counts\": [" + counts
-        + "], \"samples\": " + number(d.all.samples) + ", \"mean\": "
-        + number(d.all.mean()) + ", \"std\": " + number(d.all.std()) + "}";
+    return "[" + list + "]";
+}
+
+
+// the completed residences, and those still open at the window's end by
+// their time so far (censored)
+std::string residenceEntry
+(
+    const ResidenceDistribution& d,
+    double binWidth,
+    const std::vector<double>& censored
+)
+{
+    return "{\"binWidth\": " + number(binWidth) + ", \"counts\": " + countList(d.counts)
+        + ", \"samples\": " + number(d.all.samples) + ", \"mean\": "
+        + number(d.all.mean()) + ", \"std\": " + number(d.all.std())
+        + ",\n      \"censored\": {\"counts\": " + countList(censored) + ", \"samples\": "
+        + number(std::accumulate(censored.begin(), censored.end(), 0.0)) + "}}";
 }
 
 
@@ -512,6 +528,59 @@ CirculationRun CirculationCoupling::runFacts
 }
 
 
+std::size_t CirculationCoupling::appendOpenVisits
+(
+    const LiggghtsDem& dem,
+    std::vector<double>& all
+) const
+{
+    // their time in the window per state (the boundary term of Little's
+    // law), then by their time so far per distribution, in as many bins as
+    // the window holds (the same on every rank)
+    const double dt = mesh_.time().deltaTValue();
+    if (lastSample_ < 0)
+    {
+        all.resize(all.size() + nCirculationRegions + censoredEnd_.size(), 0.0);
+        return 1;
+    }
+    const std::array<double, nCirculationRegions> open =
+        CirculationStatistics::openAtEnd(dem.circulationTracks(), lastSample_, dt);
+    all.insert(all.end(), open.begin(), open.end());
+    const std::size_t bins =
+        std::size_t((lastSample_ - stats_.averageStart() + dt)/stats_.binWidth() + 1e-9) + 1;
+    for
+    (
+        const std::vector<double>& h
+      : CirculationStatistics::censoredAtEnd
+        (
+            dem.circulationTracks(), lastSample_, dt, stats_.binWidth(), bins
+        )
+    )
+    {
+        all.insert(all.end(), h.begin(), h.end());
+    }
+    return bins;
+}
+
+
+std::vector<double>::iterator CirculationCoupling::takeOpenVisits
+(
+    std::vector<double>& total,
+    std::size_t bins
+)
+{
+    auto h = total.end() - std::ptrdiff_t(censoredEnd_.size()*bins);
+    const auto open = h - nCirculationRegions;
+    std::copy(open, h, openEnd_.begin());
+    for (std::vector<double>& censored : censoredEnd_)
+    {
+        censored.assign(h, h + std::ptrdiff_t(bins));
+        h += std::ptrdiff_t(bins);
+    }
+    return open;
+}
+
+
 void CirculationCoupling::write
 (
     const LiggghtsDem& dem,
@@ -527,14 +596,8 @@ void CirculationCoupling::write
     MPI_Allreduce(MPI_IN_PLACE, &bins, 1, MPI_UNSIGNED_LONG, MPI_MAX, MPI_COMM_WORLD);
     std::vector<double> all = stats_.pack(bins, Foam::Pstream::master());
     all.insert(all.end(), gas_, gas_ + nGas);
-    // the visits open at the last sample (the boundary term of Little's law)
-    const std::array<double, nCirculationRegions> open =
-        lastSample_ < 0 ? std::array<double, nCirculationRegions>{}
-      : CirculationStatistics::openAtEnd
-        (
-            dem.circulationTracks(), lastSample_, mesh_.time().deltaTValue()
-        );
-    all.insert(all.end(), open.begin(), open.end());
+    // the visits open at the last sample, from the tracks: not sums kept
+    const std::size_t censoredBins = appendOpenVisits(dem, all);
     std::vector<double> total(all.size());
     MPI_Reduce(all.data(), total.data(), int(all.size()), MPI_DOUBLE, MPI_SUM, 0, MPI_COMM_WORLD);
     MPI_Allreduce(MPI_IN_PLACE, &maxStep_, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
@@ -544,8 +607,7 @@ void CirculationCoupling::write
         std::fill(gas_, gas_ + nGas, 0.0);
         return;
     }
-    const auto tail = total.end() - nCirculationRegions;
-    std::copy(tail, total.end(), openEnd_.begin());
+    const auto tail = takeOpenVisits(total, censoredBins);
     stats_.unpack(std::vector<double>(total.begin(), tail - nGas));
     std::copy(tail - nGas, tail, gas_);
     if (stateFile)
@@ -597,7 +659,7 @@ std::string CirculationCoupling::residenceJson() const
     {
         const ResidenceDistribution& d = stats_.residence(i);
         const std::string key = (i ? ",\n    \"" : "\n    \"") + distributionName(i) + "\": ";
-        all += key + residenceEntry(d, stats_.binWidth());
+        all += key + residenceEntry(d, stats_.binWidth(), censoredEnd_[std::size_t(i)]);
         for (int h = 0; h < 2; ++h) halves[h] += key + moments(d.halves[h]);
     }
     return "\"residence\": " + all + "},\n  \"halves\": {\"first\": " + halves[0]

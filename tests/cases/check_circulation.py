@@ -19,6 +19,10 @@ spoutedBedCirculation's two runs (uninterrupted and killed + restarted).
                   printed beside it with what a stationary bed would give
                   over this window (spoutlab.circulationstats.littles_law):
                   a 0.9 s window is short beside the slow states' visits
+  censored        every entry into a state in the window either completed
+                  its visit or was still open at the end: completed +
+                  censored = entries, per state and for the cycle (one
+                  per spout entry), exactly
   restart         the restarted run's statistics equal the uninterrupted
                   run's: the binary state at the end bit for bit,
                   circulation.json as text.  On RANKS > 1 the two runs part
@@ -75,6 +79,12 @@ def check_run(case, label):
               % (occupied, visits, '1 - rate W/L %.3f (a stationary bed: %.3f +- %.3f)' % law
                  if law else 'no completed visits'))
     check(label + "Little's law checked in every state", checked == 4, '%d' % checked)
+    for k in cs.DISTRIBUTIONS:
+        d = stats['residence'][k]
+        entries = stats['conditions']['spout' if k == 'cycle' else k]['entries']
+        censored = d.get('censored', {}).get('samples', float('nan'))
+        check(label + 'completed + censored = entries, ' + k, d['samples'] + censored == entries,
+              '%d + %g of %d' % (d['samples'], censored, entries))
     for k in cs.DISTRIBUTIONS:
         h = cs.halves_agreement(stats, k)
         if h:

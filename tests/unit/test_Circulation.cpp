@@ -173,6 +173,70 @@ TEST(CirculationStatistics, CycleBetweenSpoutEntries)
     EXPECT_NEAR(e.all.sum, 0.75 + 0.25 + 0.25, 1e-12);
 }
 
+// The visits open at the end, by their time so far: the fountain entered at
+// the last sample (1.5 s, so 0.1 s so far) and the cycle from the spout entry
+// at 1.1 s (0.5 s); the incomplete first visit of a particle seen in one
+// state all the window long has no known entry and is not among them.
+TEST(CirculationStatistics, CensoredAtEndByHand)
+{
+    CirculationStatistics stats(bed, 0.0, 100.0, 0.05);
+    std::vector<double> track = freshTrack();
+    follow(stats, track,
+           repeat(inSpout, 3) + repeat(inFountain, 2) + repeat(inDowncomer, 5) + repeat(inEntrainment, 1)
+               + repeat(inSpout, 4) + repeat(inFountain, 1),
+           0.0, 0.1); // as OneCycleByHand
+    ASSERT_NEAR(track[1], 1.5, 1e-12);
+    ASSERT_NEAR(track[2], 1.1, 1e-12);
+    std::vector<double> spanning = freshTrack();
+    follow(stats, spanning, repeat(inDowncomer, 16), 0.0, 0.1);
+    const auto open =
+        CirculationStatistics::censoredAtEnd({track.data(), spanning.data()}, 1.5, 0.1, 0.05, 40);
+    for (std::size_t k = 0; k < open.size(); ++k)
+    {
+        ASSERT_EQ(open[k].size(), 40u);
+        const double n = std::accumulate(open[k].begin(), open[k].end(), 0.0);
+        const bool expected = k == fountainRegion || k == CirculationStatistics::cycle;
+        EXPECT_EQ(n, expected ? 1.0 : 0.0) << k;
+    }
+    EXPECT_EQ(open[fountainRegion][2], 1.0);                // 0.1 s: [0.10, 0.15)
+    EXPECT_EQ(open[CirculationStatistics::cycle][10], 1.0); // 0.5 s: [0.50, 0.55)
+    // an age beyond the bins counts in the last
+    const auto few = CirculationStatistics::censoredAtEnd({track.data()}, 1.5, 0.1, 0.05, 4);
+    EXPECT_EQ(few[CirculationStatistics::cycle][3], 1.0);
+}
+
+// Every entry into a state in the window is either a completed visit or
+// one still open at the end: per state, completed + censored = entries,
+// whatever the phases of the particles against the window.
+TEST(CirculationStatistics, EveryEntryIsCompletedOrCensored)
+{
+    CirculationStatistics stats(bed, 0.35, 100.0, 0.1);
+    const std::vector<Vec3> loop =
+        repeat(inSpout, 3) + repeat(inFountain, 2) + repeat(inDowncomer, 7) + repeat(inEntrainment, 2);
+    std::vector<std::vector<double>> tracks;
+    for (int phase = 0; phase < 11; ++phase)
+    {
+        std::vector<Vec3> places;
+        for (int k = 0; k < 40; ++k) places.push_back(loop[std::size_t(k + phase) % loop.size()]);
+        tracks.push_back(freshTrack());
+        for (std::size_t k = 0; k < places.size(); ++k)
+            stats.observe(0.05 * double(k), places[k], tracks.back().data(), {});
+    }
+    std::vector<double*> pointers;
+    for (std::vector<double>& t : tracks) pointers.push_back(t.data());
+    const auto open = CirculationStatistics::censoredAtEnd(pointers, 0.05 * 39, 0.05, 0.1, 30);
+    for (int s = 0; s < nCirculationRegions; ++s)
+    {
+        const double censored =
+            std::accumulate(open[std::size_t(s)].begin(), open[std::size_t(s)].end(), 0.0);
+        EXPECT_EQ(stats.residence(s).all.samples + censored, stats.entries(s)) << circulationRegionName(s);
+    }
+    // a cycle begins at each spout entry: completed or open, one per entry
+    const auto& c = open[CirculationStatistics::cycle];
+    const double cycles = std::accumulate(c.begin(), c.end(), 0.0);
+    EXPECT_EQ(stats.residence(CirculationStatistics::cycle).all.samples + cycles, stats.entries(spoutRegion));
+}
+
 // Flicker at the plates' upper edge and a fountain particle falling back
 // into the spout do not change the state; neither do the plate (no region)
 // nor a fall out of the spout's bottom into the entrainment zone.
