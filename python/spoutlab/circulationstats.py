@@ -10,6 +10,14 @@ read circulation.json, check it and draw its residence-time distributions.
                          the same over the window with its boundary terms,
                          which holds exactly: holdup x window = completed
                          residences + openAtStart + openAtEnd
+  kaplan_meier(stats, key)
+                         the residence-time distribution from the completed
+                         visits and those still open at the window's end
+                         (censored): survival per bin edge, restricted mean,
+                         the share lasting beyond the window
+  littles_mean(stats, key)
+                         the mean residence (or cycle) by Little's law,
+                         holdup / entry rate: no visit need complete
   halves_agreement(stats, key)
                          the two halves' means against their sampling error
   cycle_vs_ws(stats, bed_mass, ws)
@@ -66,6 +74,9 @@ def check_schema(stats, path='circulation.json'):
         if sum(d['counts']) != d['samples'] or any(int(c) != c or c < 0 for c in d['counts']):
             raise SchemaError('%s: counts (sum %g) do not add up to samples %g'
                               % (where, sum(d['counts']), d['samples']))
+        c = d.get('censored')
+        if c is not None and (not isinstance(c, dict) or sum(c.get('counts', [])) != c.get('samples')):
+            raise SchemaError('%s/censored: counts do not add up to samples' % where)
         for half in ('first', 'second'):
             _need(stats['halves'], [half], path + ': halves')
             _need(stats['halves'][half].get(key), ['samples', 'mean', 'std'],
@@ -126,6 +137,54 @@ def boundary_terms(stats, state):
             + c['openAtStart'] + c['openAtEnd'])
 
 
+def kaplan_meier(stats, key):
+    """The distribution of residence times (key a state or 'cycle') from the
+    visits that began in the window: those that ended in it (counts) and
+    those still open at its end, known only to last at least their time so
+    far (residence/<key>/censored; none in files without it).  A window
+    shorter than the longest visits keeps only the short ones among the
+    completed: their mean is biased low, and Kaplan-Meier's product over
+    the bins of (1 - ended / at risk) is not.  Actuarial form: a visit
+    censored in bin i was at risk for half of it.
+    Returns dict(survival=[S at each bin edge, from S(0) = 1], mean=the
+    restricted mean, integral of S over the bins [s], beyond=S at the last
+    edge (the share of visits longer than any seen), ended=, censored=
+    (numbers of visits)) or None without a visit."""
+    d = stats['residence'][key]
+    w, ended = d['binWidth'], list(d['counts'])
+    censored = list(d.get('censored', {}).get('counts', []))
+    bins = max(len(ended), len(censored))
+    ended += [0] * (bins - len(ended))
+    censored += [0] * (bins - len(censored))
+    at_risk = sum(ended) + sum(censored)
+    if at_risk == 0:
+        return None
+    survival, mean = [1.0], 0.0
+    for e, c in zip(ended, censored):
+        exposed = at_risk - 0.5 * c
+        s = survival[-1] * (1 - e / exposed) if exposed > 0 else survival[-1]
+        mean += 0.5 * w * (survival[-1] + s)
+        survival.append(s)
+        at_risk -= e + c
+    return dict(survival=survival, mean=mean, beyond=survival[-1], ended=sum(ended),
+                censored=sum(censored))
+
+
+def littles_mean(stats, key):
+    """Mean residence in a state by Little's law, holdup / entry rate [s];
+    for 'cycle' every tracked particle's holdup over the rate of entries
+    into the spout, which is the rate of cycles.  Exact in the mean for a
+    stationary bed over any window, long visits included; its error is the
+    entry rate's.  None without entries."""
+    c = stats['conditions']
+    rate = lambda s: c[s].get('entryRate', c[s].get('entries', 0) / window(stats))
+    if key == 'cycle':
+        holdup, entries = sum(c[s]['holdup'] for s in REGIONS), rate('spout')
+    else:
+        holdup, entries = c[key]['holdup'], rate(key)
+    return holdup / entries if entries > 0 else None
+
+
 def halves_agreement(stats, key):
     """(difference of the halves' means, its standard error) [s]: the
     visits of the halves are independent samples, so the error is
@@ -138,16 +197,31 @@ def halves_agreement(stats, key):
 
 
 def cycle_vs_ws(stats, bed_mass, ws):
-    """Mean cycle time / (bed mass / W_s) - 1 (issue 24 key
-    drytime.cycle_vs_Ws_rel); also the downcomer's Little's law with W_s:
-    mean downcomer residence / (downcomer holdup x particle mass / W_s) - 1."""
-    cycle = stats['residence']['cycle']['mean']
+    """The mean cycle against bed mass / W_s (issue 24 key
+    drytime.cycle_vs_Ws_rel) and the mean downcomer residence against
+    downcomer holdup x particle mass / W_s, each as estimate / expected - 1
+    for three estimates: 'little' (littles_mean; needs no completed visit,
+    so a window shorter than a cycle of the full bed does), 'km' (the
+    Kaplan-Meier restricted mean, NaN when more than 1 % of the visits last
+    beyond the window, whose mean it then cannot give) and 'completed' (the
+    mean of the completed visits alone: low when the window is short).
+    Returns {'cycle': {...}, 'downcomer': {...}}, each also with 'beyond',
+    Kaplan-Meier's share of visits longer than the window (NaN without
+    visits)."""
     m = stats['run']['particleMass']
-    down = stats['residence']['downcomer']['mean']
-    holdup = stats['conditions']['downcomer']['holdup']
-    rel = cycle / (bed_mass / ws) - 1 if ws > 0 and cycle > 0 else float('nan')
-    rel_down = down / (holdup * m / ws) - 1 if ws > 0 and down > 0 else float('nan')
-    return rel, rel_down
+    expected = {'cycle': bed_mass / ws if ws > 0 else float('nan'),
+                'downcomer': stats['conditions']['downcomer']['holdup'] * m / ws if ws > 0
+                else float('nan')}
+    rel = lambda x, key: x / expected[key] - 1 if x and x > 0 and expected[key] > 0 \
+        else float('nan')
+    out = {}
+    for key in ('cycle', 'downcomer'):
+        km = kaplan_meier(stats, key)
+        beyond = km['beyond'] if km else float('nan')
+        out[key] = dict(little=rel(littles_mean(stats, key), key),
+                        km=rel(km['mean'], key) if km and beyond <= 0.01 else float('nan'),
+                        completed=rel(stats['residence'][key]['mean'], key), beyond=beyond)
+    return out
 
 
 def plot(stats, png):
@@ -200,11 +274,22 @@ def summarize(case, lines, ws=None, png='circulation.png'):
         if h:
             lines.append('  halves, %s: means differ by %.3g s, %.1f standard errors'
                          % (k, h[0], abs(h[0]) / h[1] if h[1] > 0 else float('inf')))
+    for k in DISTRIBUTIONS:
+        km = kaplan_meier(stats, k)
+        if km and km['censored']:
+            lines.append("  %s: %d visits open at the window's end; Kaplan-Meier: %.1f %% last "
+                         'beyond the window, restricted mean %.3g s; by Little\'s law %.3g s'
+                         % (k, km['censored'], 100 * km['beyond'], km['mean'],
+                            littles_mean(stats, k) or float('nan')))
     if ws:
         bed = run['particles'] * run['particleMass']
-        rel, rel_down = cycle_vs_ws(stats, bed, ws)
-        lines.append('  mean cycle / (bed mass / W_s): %+.3f (drytime.cycle_vs_Ws_rel); downcomer '
-                     'residence / (holdup / W_s): %+.3f' % (rel, rel_down))
+        c = cycle_vs_ws(stats, bed, ws)
+        lines.append("  mean cycle / (bed mass / W_s) - 1: by Little's law %+.3f "
+                     '(drytime.cycle_vs_Ws_rel), Kaplan-Meier %+.3f, completed cycles %+.3f; '
+                     "downcomer residence / (holdup / W_s) - 1: by Little's law %+.3f, "
+                     'Kaplan-Meier %+.3f, completed %+.3f'
+                     % tuple(c[k][e] for k in ('cycle', 'downcomer')
+                             for e in ('little', 'km', 'completed')))
     drawn = plot(stats, os.path.join(case, png))
     lines.append('  residence-time distributions: %s' % (png if drawn else drawn))
     return stats

@@ -105,14 +105,108 @@ class Checks(unittest.TestCase):
 
     def test_cycle_vs_ws(self):
         stats = copy.deepcopy(made_up())
-        stats['residence']['cycle'] = distribution(5, 11.0, 1.0)
-        stats['residence']['downcomer'] = distribution(5, 6.0, 1.0)
-        stats['conditions']['downcomer'] = conditions(holdup=2000)
-        # bed 3.3 kg, W_s 0.3 kg/s: 11 s against 11 s; downcomer 2000 x
-        # 3.3e-4 / 0.3 = 2.2 s against 6 s
-        rel, rel_down = cs.cycle_vs_ws(stats, 3.3, 0.3)
-        self.assertAlmostEqual(rel, 0.0, places=12)
-        self.assertAlmostEqual(rel_down, 6.0 / 2.2 - 1, places=12)
+        stats['residence']['cycle'] = distribution(5, 11.0, 1.0, [0] * 110 + [5])
+        stats['residence']['downcomer'] = distribution(5, 6.0, 1.0, [0] * 60 + [5])
+        stats['conditions']['downcomer'] = conditions(holdup=2000, entries=600)
+        # bed 3.3 kg, W_s 0.3 kg/s: 11 s; completed cycles 11 s (0 %),
+        # Kaplan-Meier the same bin's midpoint 11.05 s; by Little's law
+        # (0.5 + 2000) / (4 / 2 s) = 1000.25 s.  Downcomer: 2000 x 3.3e-4 /
+        # 0.3 = 2.2 s against completed 6 s, Kaplan-Meier 6.05 s, Little
+        # 2000 / (600 / 2 s) = 6.667 s
+        c = cs.cycle_vs_ws(stats, 3.3, 0.3)
+        self.assertAlmostEqual(c['cycle']['completed'], 0.0, places=12)
+        self.assertAlmostEqual(c['cycle']['km'], 11.05 / 11 - 1, places=12)
+        self.assertAlmostEqual(c['cycle']['little'], 1000.25 / 11 - 1, places=12)
+        self.assertAlmostEqual(c['downcomer']['completed'], 6.0 / 2.2 - 1, places=12)
+        self.assertAlmostEqual(c['downcomer']['km'], 6.05 / 2.2 - 1, places=12)
+        self.assertAlmostEqual(c['downcomer']['little'], (2000 / 300) / 2.2 - 1, places=12)
+        # more than 1 % of the cycles open beyond the window: no Kaplan-Meier mean
+        stats['residence']['cycle']['censored'] = {'counts': [0] * 120 + [1], 'samples': 1}
+        self.assertTrue(math.isnan(cs.cycle_vs_ws(stats, 3.3, 0.3)['cycle']['km']))
+
+
+def renewal_window(n, window, shape, scale, bin_width, seed=7):
+    """n particles, each in one state whose visits last gamma(shape, scale)
+    s, one after another, observed over a window of `window` s from a
+    stationary start (the visit open then length-biased, gamma(shape + 1),
+    a uniform share of it left): the downcomer's entry of a statistics file
+    as spoutFoam would write it, the visits begun in the window by their
+    residence (ended) or their time so far at its end (censored)."""
+    import random
+    rng = random.Random(seed)
+    bins = int(window / bin_width) + 1
+    ended, censored, entries = [0] * bins, [0] * bins, 0
+    for _ in range(n):
+        t = rng.random() * rng.gammavariate(shape + 1, scale)
+        while t < window:
+            tau = rng.gammavariate(shape, scale)
+            entries += 1
+            if t + tau <= window:
+                ended[int(tau / bin_width)] += 1
+            else:
+                censored[min(int((window - t) / bin_width), bins - 1)] += 1
+            t += tau
+    done = [x for i, c in enumerate(ended) for x in [(i + 0.5) * bin_width] * c]
+    mean = sum(done) / len(done)
+    stats = made_up()
+    stats['run']['window'] = window
+    stats['residence']['downcomer'] = dict(
+        distribution(len(done), mean, 0.0, ended), binWidth=bin_width,
+        censored={'counts': censored, 'samples': sum(censored)})
+    stats['conditions']['downcomer'] = dict(conditions(holdup=n), entryRate=entries / window)
+    return stats
+
+
+def gamma_survival(t, shape, scale):
+    """P(residence > t) of gamma(shape, scale) with an integer shape."""
+    x = t / scale
+    return math.exp(-x) * sum(x ** k / math.factorial(k) for k in range(shape))
+
+
+class Censored(unittest.TestCase):
+    def test_kaplan_meier_by_hand(self):
+        # ended in bins 1 and 3, one censored in bin 0 and one in bin 2:
+        # at risk 4 (bin 0: 4 - 0.5 exposed, none ended), 3 (bin 1: 1 of 3
+        # ended, S 2/3), 2 (bin 2: 1.5 exposed, none), 1 (bin 3: ended, S 0)
+        stats = made_up()
+        stats['residence']['fountain'] = dict(distribution(2, 0.3, 0.1, [0, 1, 0, 1]),
+                                              censored={'counts': [1, 0, 1], 'samples': 2})
+        km = cs.kaplan_meier(stats, 'fountain')
+        for got, want in zip(km['survival'], [1, 1, 2 / 3, 2 / 3, 0]):
+            self.assertAlmostEqual(got, want, places=12)
+        self.assertAlmostEqual(km['mean'], 0.1 * (1 + 5 / 6 + 2 / 3 + 1 / 3), places=12)
+        self.assertEqual((km['ended'], km['censored'], km['beyond']), (2, 2, 0))
+        self.assertIsNone(cs.kaplan_meier(made_up(), 'cycle'))
+
+    def test_window_shorter_than_the_residences(self):
+        # visits of gamma(4, 10 s), mean 40 s, seen through a 30 s window,
+        # as the full bed's downcomer: the completed visits' mean is far
+        # too short, Kaplan-Meier gives the survival up to the window's end
+        # (within a few of its standard errors, about 0.005) and Little's
+        # law the mean
+        stats = renewal_window(20000, 30.0, 4, 10.0, 1.0)
+        km = cs.kaplan_meier(stats, 'downcomer')
+        for t in (5, 10, 20, 29):
+            self.assertAlmostEqual(km['survival'][t], gamma_survival(t, 4, 10.0), delta=0.03)
+        restricted = sum(0.5 * (gamma_survival(t, 4, 10.0) + gamma_survival(t + 1, 4, 10.0))
+                         for t in range(len(km['survival']) - 1))   # over the same bins
+        self.assertAlmostEqual(km['mean'], restricted, delta=0.015 * restricted)
+        self.assertGreater(km['beyond'], 0.6)
+        self.assertLess(stats['residence']['downcomer']['mean'], 0.5 * 40)
+        self.assertAlmostEqual(cs.littles_mean(stats, 'downcomer'), 40.0, delta=0.03 * 40)
+
+    def test_little_cycle_is_all_holdup_over_spout_entries(self):
+        stats = made_up()   # spout: holdup 0.5, 4 entries in 2 s
+        stats['conditions']['downcomer'] = conditions(holdup=3.5)
+        self.assertAlmostEqual(cs.littles_mean(stats, 'cycle'), (0.5 + 3.5) / 2.0, places=12)
+        self.assertAlmostEqual(cs.littles_mean(stats, 'spout'), 0.25, places=12)
+        self.assertIsNone(cs.littles_mean(stats, 'fountain'))
+
+    def test_censored_counts_must_add_up(self):
+        stats = made_up()
+        stats['residence']['spout']['censored'] = {'counts': [1, 2], 'samples': 4}
+        with self.assertRaisesRegex(cs.SchemaError, 'residence/spout/censored'):
+            cs.check_schema(stats)
 
 
 if __name__ == '__main__':

@@ -10,9 +10,11 @@ spouted) takes from the CFD-DEM, and how it compares with it.
               --average (constant/couplingProperties 'circulation'), a
               restart point every --write seconds; started again, it
               continues.  Then the case's evaluate: W_s (eq 14), the
-              residence-time distributions, Little's law, the two halves,
-              and the mean cycle against bed mass / W_s
-              (drytime.cycle_vs_Ws_rel).  The statistics file is copied here
+              residence-time distributions (Kaplan-Meier with the visits
+              still open at the end), Little's law, the two halves, and
+              the mean cycle by Little's law against bed mass / W_s
+              (drytime.cycle_vs_Ws_rel; a window shorter than the cycle
+              does), Kaplan-Meier's and the completed cycles' beside it.  The statistics file is copied here
               as circulation_u<u>.json, the predictor's input for this
               operating point.
   consistency the predictor against a direct CFD-DEM drying run where both
@@ -137,13 +139,15 @@ def statistics(o):
     ws = ws_of(work)
     stats = circulationstats.summarize(work, lines, ws=ws)
     run = stats['run']
-    rel, rel_down = circulationstats.cycle_vs_ws(stats, run['particles'] * run['particleMass'],
-                                                 ws)
+    check = circulationstats.cycle_vs_ws(stats, run['particles'] * run['particleMass'], ws)
     halves = {k: circulationstats.halves_agreement(stats, k)
               for k in circulationstats.DISTRIBUTIONS}
     wall = os.path.join(work, 'log.wallTime')
     r = dict(run=work, u_s=o['u'], time=o['time'], average=o['average'],
-             particles=run['particles'], Ws=ws, cycle_vs_Ws_rel=rel, downcomer_vs_Ws_rel=rel_down,
+             particles=run['particles'], Ws=ws, cycle_vs_Ws_rel=check['cycle']['little'],
+             downcomer_vs_Ws_rel=check['downcomer']['little'], checks=check,
+             cycle_expected_s=run['particles'] * run['particleMass'] / ws if ws > 0 else None,
+             cycle_little_s=circulationstats.littles_mean(stats, 'cycle'),
              residence={k: stats['residence'][k]['mean'] for k in circulationstats.DISTRIBUTIONS},
              visits={k: stats['residence'][k]['samples'] for k in circulationstats.DISTRIBUTIONS},
              halves={k: (list(h) if h else None) for k, h in halves.items()},

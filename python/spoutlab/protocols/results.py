@@ -1028,6 +1028,22 @@ def drytime_study(study):
     return rows, keys
 
 
+def cycle_row(st):
+    """The cycle check's cell: Little's law's mean cycle against bed mass /
+    W_s, Kaplan-Meier's and the completed cycles' beside it (older
+    dryingTime.json: the completed cycles' alone)."""
+    rel = st['cycle_vs_Ws_rel']
+    if 'cycle_little_s' not in st:
+        return '%.3g s (%d completed cycles): %+.1f %%' % (st['residence']['cycle'],
+                                                           st['visits']['cycle'], 100 * rel)
+    c = st['checks']['cycle']
+    km = ('Kaplan-Meier %+.1f %%' % (100 * c['km']) if c['km'] == c['km'] else
+          'Kaplan-Meier: %.0f %% of the cycles last beyond the window' % (100 * c['beyond']))
+    return ('%.3g s against %.3g s: %+.1f %%; %s; the %d completed cycles %.3g s (%+.1f %%)'
+            % (st['cycle_little_s'], st['cycle_expected_s'], 100 * rel, km,
+               st['visits']['cycle'], st['residence']['cycle'], 100 * c['completed']))
+
+
 def drytime_section(case):
     """The long-time predictor's side of the CFD-DEM from protocols/
     dryingTime's dryingTime.json: the circulation statistics per operating
@@ -1044,17 +1060,17 @@ def drytime_section(case):
                   ' / '.join('%.3g s (%d)' % (res[k], n[k])
                              for k in ('spout', 'fountain', 'downcomer', 'entrainment')), '',
                   settings, wall),
-                 ('mean cycle against bed mass / W_s (eq 14)', '%.3g s (%d cycles) against '
-                  '%.3g s: %+.1f %%' % (res['cycle'], n['cycle'], res['cycle'] /
-                                         (1 + st['cycle_vs_Ws_rel']), 100 * st['cycle_vs_Ws_rel']),
-                  'within 5 % (issue 24)', settings, wall),
+                 ("mean cycle by Little's law (all particles / spout entry rate) against bed "
+                  'mass / W_s (eq 14)', cycle_row(st), 'within 5 % (issue 24)', settings, wall),
                  ("the window's two halves: difference of the mean residences / its standard "
                   'error', ', '.join('%s %.1f' % (k, abs(h[0]) / h[1]) for k, h in
                                      sorted(st['halves'].items()) if h and h[1] > 0),
                   'within the sampling error (about 2 or less)', settings, wall)]
         keys.append(('drytime.cycle_vs_Ws_rel' + ('' if label == 'u2' else '_' + label),
                      '%.3g' % st['cycle_vs_Ws_rel'], '', '0',
-                     'mean cycle / (bed mass / W_s) - 1, W_s of eq 14 %.4g kg/s; ' % st['Ws']
+                     ("mean cycle by Little's law / (bed mass / W_s) - 1, W_s of eq 14 %.4g "
+                      'kg/s; ' if 'cycle_little_s' in st else
+                      'mean cycle / (bed mass / W_s) - 1, W_s of eq 14 %.4g kg/s; ') % st['Ws']
                      + settings))
         pngs.append(('dryingTime_circulation_%s.png' % label,
                      'drytime_circulation_%s.png' % label))
