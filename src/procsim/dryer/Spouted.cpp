@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <numeric>
 #include <stdexcept>
@@ -24,6 +25,41 @@ double Residence::histogramMean() const
         n += counts[i];
     }
     return n > 0 ? binWidth * sum / n : 0.0;
+}
+
+void Residence::censor(const std::vector<double>& censored, double littleMean, double littleError)
+{
+    const std::size_t bins = std::max(counts.size(), censored.size());
+    counts.resize(bins, 0.0);
+    double atRisk = 0;
+    for (std::size_t i = 0; i < bins; ++i) atRisk += counts[i] + (i < censored.size() ? censored[i] : 0.0);
+    // a visit censored in bin i was at risk for half of it
+    double survival = 1, restricted = 0;
+    for (std::size_t i = 0; i < bins; ++i)
+    {
+        const double c = i < censored.size() ? censored[i] : 0.0, exposed = atRisk - 0.5 * c;
+        const double next = exposed > 0 ? survival * (1 - counts[i] / exposed) : survival;
+        atRisk -= counts[i] + c;
+        restricted += 0.5 * binWidth * (survival + next);
+        counts[i] = survival - next;
+        survival = next;
+    }
+    tailShare = survival;
+    tailMean = 0;
+    mean = restricted;
+    if (tailShare == 0) return;
+    if (littleMean < restricted - 3 * littleError)
+    {
+        char text[200];
+        std::snprintf(text, sizeof text,
+                      "a mean by Little's law at most 3 errors below the %.4g s its visits within the window "
+                      "give; Little's is %.4g +- %.2g s",
+                      restricted, littleMean, littleError);
+        throw std::invalid_argument(text);
+    }
+    // within its error of the bins' mean, the tail ends at the window's edge
+    tailMean = std::max(0.0, littleMean - restricted) / tailShare;
+    mean = restricted + tailShare * tailMean;
 }
 
 void Residence::prepare()
@@ -57,14 +93,29 @@ double binOf(const std::vector<double>& sums, double u)
 
 double Residence::draw(double u1, double u2) const
 {
-    return binWidth * (binOf(cumulative, u1) + u2);
+    if (tailShare == 0) return binWidth * (binOf(cumulative, u1) + u2);
+    const double bins = 1 - tailShare; // the bins' share, cumulative.back()
+    if (u1 < bins) return binWidth * (binOf(cumulative, u1 / bins) + u2);
+    return binWidth * static_cast<double>(counts.size()) - tailMean * std::log1p(-u2);
 }
 
 double Residence::drawResidual(double u1, double u2, double u3) const
 {
     // length-biased: bin i with weight count_i (i + 1/2), density ~ t within it
-    const double i = binOf(lengthCumulative, u1);
-    const double t = binWidth * std::sqrt(i * i + u2 * (2 * i + 1));
+    const auto inBin = [&](double u) {
+        const double i = binOf(lengthCumulative, u);
+        return binWidth * std::sqrt(i * i + u2 * (2 * i + 1));
+    };
+    if (tailShare == 0) return u3 * inBin(u1);
+    // the tail past E, length-biased: density ~ t exp(-(t - E)/theta), the
+    // mixture of E + Exp(theta) (weight E) and E + Gamma(2, theta) (theta)
+    const double E = binWidth * static_cast<double>(counts.size()), theta = tailMean;
+    const double bins = lengthCumulative.back() * binWidth, tail = tailShare * (E + theta);
+    const double u = u1 * (bins + tail);
+    if (u < bins) return u3 * inBin(u / bins);
+    const double v = (u - bins) / tail, exponential = E / (E + theta); // v uniform in [0, 1)
+    double t = E - theta * std::log1p(-u2);
+    if (v >= exponential) t -= theta * std::log1p(-(v - exponential) / (1 - exponential));
     return u3 * t;
 }
 

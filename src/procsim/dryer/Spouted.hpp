@@ -14,7 +14,9 @@
 // Particles. A sample is in one region; when its residence there is over it
 // moves to the next region of the cycle (the file's `regions` order) with a
 // residence drawn from that region's histogram (a bin with probability
-// count/samples, uniform within the bin). At t = 0 the samples are placed as
+// count/samples, uniform within the bin; with the visits open at the
+// window's end, Kaplan-Meier's probabilities and a tail, Residence::censor).
+// At t = 0 the samples are placed as
 // the stationary circulation has them: region r with probability
 // mean_r / sum of means, the time left there the residual of a length-biased
 // draw (renewal theory), so the bed starts at its measured holdup. Each
@@ -85,8 +87,21 @@ struct Residence
     long samples = 0;
     double mean = 0; // as the file gives it [s]
     double std = 0;
+    // visits longer than any bin (censor): their share, drawn from an
+    // exponential tail past the last bin with mean tailMean [s]
+    double tailShare = 0, tailMean = 0;
 
     double histogramMean() const; // from the bins' midpoints [s]
+    // The completed visits (counts) with those still open at the window's
+    // end, `censored` (bin i: at least i w so far), as Kaplan-Meier's
+    // (actuarial) probability per bin; what lasts beyond the last bin the
+    // tail, whose mean puts the whole mean at littleMean (Little's law,
+    // holdup / entry rate, which needs no visit to end), or at the window's
+    // edge where littleMean falls short of the mean the bins give by less
+    // than 3 littleError (its sampling error). counts then hold
+    // probabilities and mean is the whole mean. Throws
+    // std::invalid_argument when littleMean falls short by more.
+    void censor(const std::vector<double>& censored, double littleMean, double littleError);
     // the running sums the draws search (after the counts are set)
     void prepare();
     // a residence from two uniform numbers in [0, 1) (prepared)

@@ -102,6 +102,38 @@ Residence readResidence(const YamlInput& r)
     return res;
 }
 
+// The visits still open at the window's end (residence.<key>.censored,
+// when the file has them) into res by Kaplan-Meier, the tail past the
+// window from Little's law: holdup / entryRate of the states `states`
+// (one region; for the cycle all of them over the spout's entries)
+void readCensored(const YamlInput& r, const YamlInput& conditions, const std::vector<std::string>& states,
+                  const std::string& entering, Residence& res)
+{
+    if (!r.has("censored")) return;
+    const YamlInput c = r.child("censored");
+    Residence open;
+    const long sum = readCounts(c, open);
+    if (sum != c.integer("samples", 0, 2000000000L))
+        throw c.error("samples", "the sum of the counts, " + std::to_string(sum));
+    if (sum == 0) return;
+    double holdup = 0;
+    for (const std::string& s : states) holdup += conditions.child(s).within("holdup", 0, 1e12);
+    const YamlInput into = conditions.child(entering);
+    const double rate = into.within("entryRate", 0, 1e12, "1/s");
+    if (!(rate > 0)) throw into.error("entryRate", "entries per second above 0");
+    // Little's mean is as good as the entry rate, whose count n scatters by
+    // sqrt(n)
+    const double entries = into.within("entries", 1, 1e15);
+    try
+    {
+        res.censor(open.counts, holdup / rate, holdup / rate / std::sqrt(entries));
+    }
+    catch (const std::invalid_argument& e)
+    {
+        throw c.error("counts", std::string(e.what()) + " (a bed not yet stationary?)");
+    }
+}
+
 void same(const YamlInput& stats, const std::string& key, double theirs, double ours, const std::string& what,
           const std::string& caseFile)
 {
@@ -214,7 +246,9 @@ void readStatistics(const std::string& file, Case& c, const CaseGeometry& g, con
         throw s.error("regions", "the four regions spout, fountain, downcomer, entrainment");
     rejectDuplicates(order, file + ": key 'regions'", "region");
     const YamlInput res = s.child("residence"), cond = s.child("conditions");
-    c.cycleMean = readResidence(res.child("cycle")).mean;
+    Residence cycle = readResidence(res.child("cycle"));
+    readCensored(res.child("cycle"), cond, order, "spout", cycle);
+    c.cycleMean = cycle.mean;
     for (const std::string& name : order)
     {
         if (!kRegions.count(name)) throw s.error("regions", "spout, fountain, downcomer and entrainment");
@@ -223,6 +257,7 @@ void readStatistics(const std::string& file, Case& c, const CaseGeometry& g, con
         Region r;
         r.name = name;
         r.residence = readResidence(res.child(name));
+        readCensored(res.child(name), cond, {name}, name, r.residence);
         const YamlInput k = cond.child(name);
         r.slipReynolds = k.within("slipRe", 0, 1e6);
         r.voidage = k.within("voidage", 1e-3, 1);

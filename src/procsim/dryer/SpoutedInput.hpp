@@ -9,7 +9,12 @@
 // least kMinResidences residence times, more where the times scatter more:
 // n >= (cv / 0.05)^2, cv = std/mean, so that the mean a sample's hops follow
 // is within 5 % (one standard error) of the bed's. 400 is that for cv = 1,
-// an exponential distribution's, the widest a well-mixed region gives. A
+// an exponential distribution's, the widest a well-mixed region gives.
+// Visits still open at the window's end (residence.<key>.censored), which a
+// window shorter than the longest visits has, enter by Kaplan-Meier, and
+// what lasts beyond the window as an exponential tail that puts the mean at
+// Little's law's, holdup / entryRate, within three of its errors, 1/sqrt of
+// the entries (Residence::censor). A
 // target moisture at or below the kernels' equilibrium with the inlet air
 // (the driest, hottest air in the bed) can never be reached and is refused.
 #include <string>

@@ -14,6 +14,7 @@
 
 #include <cmath>
 #include <memory>
+#include <random>
 
 #include "DryingModel.hpp"
 #include "HeatTransferModel.hpp"
@@ -573,4 +574,74 @@ TEST(Spouted, PlugFlowGasLeavesAsTheExponentialRelaxationWellMixedAsItsLimit)
         EXPECT_NEAR(r.series[1].outletC, expected, 1e-9) << (plug ? "plug flow" : "well mixed");
         EXPECT_LT(r.energyBalanceRel, 1e-9);
     }
+}
+
+namespace
+{
+
+Residence histogram(double w, std::vector<double> counts)
+{
+    Residence r;
+    r.binWidth = w;
+    r.counts = std::move(counts);
+    for (const double n : r.counts) r.samples += static_cast<long>(n);
+    r.mean = r.histogramMean();
+    return r;
+}
+
+} // namespace
+
+// Kaplan-Meier by hand: ended in bins 1 and 3, censored in bins 0 and 2 (at
+// risk 4, 3, 2, 1; a censored visit half of its bin): S at the edges 1, 1,
+// 2/3, 2/3, 0, every visit within the bins, the mean the area under S.
+TEST(SpoutedResidence, CensoredVisitsByKaplanMeier)
+{
+    Residence r = histogram(0.1, {0, 1, 0, 1});
+    r.censor({1, 0, 1}, 99.0, 0.1); // Little's mean unused: nothing lasts beyond
+    const double want[4] = {0, 1.0 / 3, 0, 2.0 / 3};
+    ASSERT_EQ(r.counts.size(), 4u);
+    for (int i = 0; i < 4; ++i) EXPECT_NEAR(r.counts[i], want[i], 1e-15) << i;
+    EXPECT_EQ(r.tailShare, 0.0);
+    EXPECT_NEAR(r.mean, 0.1 * (1 + 5.0 / 6 + 2.0 / 3 + 1.0 / 3), 1e-15);
+}
+
+// Visits beyond the window: two of four ended in bin 0, two still open in
+// bin 1 (S 1/2 from bin 0 on); the tail past E = 2 s takes the mean to
+// Little's 3 s: theta = (3 - 1.25) / 0.5 = 3.5 s. Draws: mean 3 s; the
+// residual at a random instant E[T^2] / (2 E[T]), E[T^2] = 0.5 / 3 + 0.5
+// (E^2 + 2 E theta + 2 theta^2) = 21.4167 s^2.
+TEST(SpoutedResidence, VisitsLongerThanTheWindowFollowLittlesMean)
+{
+    Residence r = histogram(1.0, {2, 0});
+    r.censor({0, 2}, 3.0, 0.01);
+    EXPECT_NEAR(r.tailShare, 0.5, 1e-15);
+    EXPECT_NEAR(r.tailMean, 3.5, 1e-14);
+    EXPECT_EQ(r.mean, 3.0);
+    r.prepare();
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> u(0, 1);
+    const int n = 1000000;
+    double sum = 0, sumSq = 0, residual = 0;
+    for (int k = 0; k < n; ++k)
+    {
+        const double t = r.draw(u(rng), u(rng));
+        sum += t;
+        sumSq += t * t;
+        residual += r.drawResidual(u(rng), u(rng), u(rng));
+    }
+    const double second = 0.5 / 3 + 0.5 * (4 + 2 * 2 * 3.5 + 2 * 3.5 * 3.5);
+    const double sigma = std::sqrt(second - 9) / std::sqrt(n);
+    EXPECT_NEAR(sum / n, 3.0, 4 * sigma);
+    EXPECT_NEAR(sumSq / n, second, 0.01 * second);
+    EXPECT_NEAR(residual / n, second / 6, 0.01 * second / 6);
+    // a Little's mean below the 1.25 s the window's visits give: within 3
+    // of its errors the tail ends at the window's edge, beyond them refused
+    Residence edge = histogram(1.0, {2, 0});
+    edge.censor({0, 2}, 1.2, 0.02);
+    EXPECT_EQ(edge.tailMean, 0.0);
+    EXPECT_NEAR(edge.mean, 1.25, 1e-15);
+    edge.prepare();
+    EXPECT_EQ(edge.draw(0.75, 0.5), 2.0);
+    Residence short_ = histogram(1.0, {2, 0});
+    EXPECT_THROW(short_.censor({0, 2}, 1.0, 0.05), std::invalid_argument);
 }
