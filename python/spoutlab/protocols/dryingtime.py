@@ -525,8 +525,9 @@ def study(o):
         st, _ = statistics(dict(o, u=u))
         stats_file = os.path.join(st['run'], 'circulation.json')
         rel = st['cycle_vs_Ws_rel']
-        lines.append('%g u_ms = %g m/s: statistics in %s (spoutFoam %.0f min), mean cycle %.3g s, %s'
-                     % (k, u, st['run'], st['wall_s'] / 60, st['residence']['cycle'],
+        lines.append("%g u_ms = %g m/s: statistics in %s (spoutFoam %.0f min), mean cycle by "
+                     "Little's law %.3g s, %s"
+                     % (k, u, st['run'], st['wall_s'] / 60, st['cycle_little_s'],
                         '%+.1f %% from bed mass / W_s' % (100 * rel) if math.isfinite(rel) else
                         'W_s of eq 14 not above 0 (its downcomer row, just above the slanting base, '
                         'lies above a shallow bed)'))
@@ -548,7 +549,7 @@ def study(o):
                      Tmax_C=float(v['T_kernel_max_C']),
                      spread=float(v['X_final_std_percent_db']) / 100,
                      eta_percent=float(v['eta_percent']), wall_s=float(open(wall).read()),
-                     statistics_wall_s=st['wall_s'], cycle_s=st['residence']['cycle'],
+                     statistics_wall_s=st['wall_s'], cycle_s=st['cycle_little_s'],
                      particles=n, ums=ums, Hd=g.Hd / 1000,
                      drying_model=g.dryingModel)
             rows.append(r)

@@ -1003,7 +1003,8 @@ def drytime_study(study):
         first = next(q for q in study if q['u_over_ums'] == k)   # the velocity's statistics
         if 'cycle_s' in first:
             rows.append(('design study: the circulation statistics at %g u_ms (%g m/s)'
-                         % (k, first['u_s']), 'mean cycle %.3g s' % first['cycle_s'], '',
+                         % (k, first['u_s']),
+                         "mean cycle %.3g s (Little's law)" % first['cycle_s'], '',
                          settings, '%.2f h' % (first['statistics_wall_s'] / 3600)))
     for q in study:
         point = 'drytime.%gC_%gums%s' % (q['T_in_C'], q['u_over_ums'], suffix)
