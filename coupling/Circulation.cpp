@@ -64,13 +64,23 @@ CirculationStatistics::CirculationStatistics(const DraftPlateRegions& regions, d
     if (!(binWidth > 0)) throw std::invalid_argument("CirculationStatistics: bin width must be > 0");
 }
 
+namespace
+{
+
+// The histogram bin of a residence tau: residences are whole numbers of
+// sampling intervals, often on a bin edge, which round-off would put on
+// either side: within 1e-9 of a bin below an edge counts in the upper bin
+std::size_t residenceBin(double tau, double binWidth)
+{
+    return std::size_t(std::max(0.0, std::floor(tau / binWidth + 1e-9)));
+}
+
+} // namespace
+
 void CirculationStatistics::addResidence(int index, double tau, double t)
 {
     ResidenceDistribution& d = residence_[std::size_t(index)];
-    // residences are whole numbers of sampling intervals, often on a bin
-    // edge, which round-off would put on either side: within 1e-9 of a bin
-    // below an edge counts in the upper bin
-    const auto bin = std::size_t(std::max(0.0, std::floor(tau / binWidth_ + 1e-9)));
+    const std::size_t bin = residenceBin(tau, binWidth_);
     if (d.counts.size() <= bin) d.counts.resize(bin + 1, 0.0);
     d.counts[bin] += 1;
     d.all.add(tau);
@@ -192,8 +202,7 @@ CirculationStatistics::censoredAtEnd(const std::vector<double*>& tracks, double 
     std::array<std::vector<double>, nCirculationRegions + 1> open;
     for (std::vector<double>& h : open) h.assign(std::max<std::size_t>(bins, 1), 0.0);
     const auto add = [&](std::size_t index, double entry) {
-        // as addResidence bins a completed one: within 1e-9 of a bin below an edge in the upper
-        const auto bin = std::size_t(std::max(0.0, std::floor((tLast - entry + dt) / binWidth + 1e-9)));
+        const std::size_t bin = residenceBin(tLast - entry + dt, binWidth); // as a completed one
         open[index][std::min(bin, open[index].size() - 1)] += 1;
     };
     for (const double* track : tracks)
