@@ -74,7 +74,17 @@ long readCounts(const YamlInput& r, Residence& res)
     return sum;
 }
 
-Residence readResidence(const YamlInput& r)
+// Residence r (residence.<key>): its completed visits and, where the file
+// has them, the visits still open at the window's end (censored) by
+// Kaplan-Meier, with the tail past the window from Little's law: holdup /
+// entryRate of the states `states` (one region; for the cycle all of them
+// over the entries into `entering`, the spout). The mean must be known
+// within 5 %: from n completed visits at cv = std/mean that takes
+// n >= (cv/0.05)^2; by Little's law, whose error is 1/sqrt(entries), 400
+// entries, completed or open -- the full bed's downcomer visits outlast a
+// window of 20 s, and none may have ended in it.
+Residence readResidence(const YamlInput& r, const YamlInput& conditions, const std::vector<std::string>& states,
+                        const std::string& entering)
 {
     Residence res;
     res.binWidth = r.within("binWidth", 1e-9, 1e6, "s");
@@ -86,43 +96,44 @@ Residence readResidence(const YamlInput& r)
     res.mean = r.within("mean", 0, 1e6, "s");
     res.std = r.within("std", 0, 1e6, "s");
     if (sum != res.samples) throw r.error("samples", "the sum of the counts, " + std::to_string(sum));
-    const long need = std::max<long>(
-        kMinResidences,
-        res.mean > 0 ? static_cast<long>(std::ceil(std::pow(res.std / res.mean / 0.05, 2))) : 0);
-    if (res.samples < need)
-        throw r.error("samples", "at least " + std::to_string(need)
-                                     + " residence times (the mean within 5 % at cv "
-                                     + formatNumber(res.mean > 0 ? res.std / res.mean : 0, 3)
-                                     + "): too few cycles for a distribution; average over a longer run");
-    if (!(res.mean > 0)) throw r.error("mean", "a positive mean residence time [s]");
-    // the bins' midpoints put the mean within half a bin of the exact one
-    if (std::fabs(res.histogramMean() - res.mean) > 0.5 * res.binWidth * (1 + 1e-9))
-        throw r.error("mean",
-                      "the counts' mean " + formatNumber(res.histogramMean()) + " s within half a bin");
-    return res;
-}
-
-// The visits still open at the window's end (residence.<key>.censored,
-// when the file has them) into res by Kaplan-Meier, the tail past the
-// window from Little's law: holdup / entryRate of the states `states`
-// (one region; for the cycle all of them over the spout's entries)
-void readCensored(const YamlInput& r, const YamlInput& conditions, const std::vector<std::string>& states,
-                  const std::string& entering, Residence& res)
-{
-    if (!r.has("censored")) return;
-    const YamlInput c = r.child("censored");
     Residence open;
-    const long sum = readCounts(c, open);
-    if (sum != c.integer("samples", 0, 2000000000L))
-        throw c.error("samples", "the sum of the counts, " + std::to_string(sum));
-    if (sum == 0) return;
+    long opened = 0;
+    if (r.has("censored"))
+    {
+        const YamlInput c = r.child("censored");
+        opened = readCounts(c, open);
+        if (opened != c.integer("samples", 0, 2000000000L))
+            throw c.error("samples", "the sum of the counts, " + std::to_string(opened));
+    }
+    const double cv = res.mean > 0 ? res.std / res.mean : 0;
+    const long need =
+        opened > 0 ? kMinResidences
+                   : std::max<long>(kMinResidences, static_cast<long>(std::ceil(std::pow(cv / 0.05, 2))));
+    if (res.samples + opened < need)
+    {
+        const std::string which =
+            opened > 0 ? " residence times, completed or open at the window's end (" + std::to_string(res.samples)
+                             + " + " + std::to_string(opened) + ")"
+                       : " residence times (the mean within 5 % at cv " + formatNumber(cv, 3) + ")";
+        throw r.error("samples", "at least " + std::to_string(need) + which
+                                     + ": too few cycles for a distribution; average over a longer run");
+    }
+    if (res.samples > 0 || opened == 0)
+    {
+        if (!(res.mean > 0)) throw r.error("mean", "a positive mean residence time [s]");
+        // the bins' midpoints put the mean within half a bin of the exact one
+        if (std::fabs(res.histogramMean() - res.mean) > 0.5 * res.binWidth * (1 + 1e-9))
+            throw r.error("mean",
+                          "the counts' mean " + formatNumber(res.histogramMean()) + " s within half a bin");
+    }
+    if (opened == 0) return res;
     double holdup = 0;
     for (const std::string& s : states) holdup += conditions.child(s).within("holdup", 0, 1e12);
     const YamlInput into = conditions.child(entering);
     const double rate = into.within("entryRate", 0, 1e12, "1/s");
     if (!(rate > 0)) throw into.error("entryRate", "entries per second above 0");
-    // Little's mean is as good as the entry rate, whose count n scatters by
-    // sqrt(n)
+    // Little's mean is as good as the entry rate, whose count scatters by
+    // its square root
     const double entries = into.within("entries", 1, 1e15);
     try
     {
@@ -130,8 +141,9 @@ void readCensored(const YamlInput& r, const YamlInput& conditions, const std::ve
     }
     catch (const std::invalid_argument& e)
     {
-        throw c.error("counts", std::string(e.what()) + " (a bed not yet stationary?)");
+        throw r.child("censored").error("counts", std::string(e.what()) + " (a bed not yet stationary?)");
     }
+    return res;
 }
 
 void same(const YamlInput& stats, const std::string& key, double theirs, double ours, const std::string& what,
@@ -246,8 +258,7 @@ void readStatistics(const std::string& file, Case& c, const CaseGeometry& g, con
         throw s.error("regions", "the four regions spout, fountain, downcomer, entrainment");
     rejectDuplicates(order, file + ": key 'regions'", "region");
     const YamlInput res = s.child("residence"), cond = s.child("conditions");
-    Residence cycle = readResidence(res.child("cycle"));
-    readCensored(res.child("cycle"), cond, order, "spout", cycle);
+    const Residence cycle = readResidence(res.child("cycle"), cond, order, "spout");
     c.cycleMean = cycle.mean;
     for (const std::string& name : order)
     {
@@ -256,8 +267,7 @@ void readStatistics(const std::string& file, Case& c, const CaseGeometry& g, con
             throw caseRegions.error(name, "the heat-transfer model of region '" + name + "' of " + file);
         Region r;
         r.name = name;
-        r.residence = readResidence(res.child(name));
-        readCensored(res.child(name), cond, {name}, name, r.residence);
+        r.residence = readResidence(res.child(name), cond, {name}, name);
         const YamlInput k = cond.child(name);
         r.slipReynolds = k.within("slipRe", 0, 1e6);
         r.voidage = k.within("voidage", 1e-3, 1);
