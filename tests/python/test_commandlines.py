@@ -174,7 +174,7 @@ class Defaults(unittest.TestCase):
                               '--dryingTime', 't', '--coarse', 'c2'])
         self.assertEqual((a.cases, a.heat, a.noplates, a.maps, a.mixing, a.drying, a.dryingTime,
                           a.coarse, a.out),
-                         (['ums', 'circ'], 'h', ['a', 'b'], None, ['m'], 'd', 't', ['c2'], 'out.md'))
+                         (['ums', 'circ'], 'h', ['a', 'b'], None, ['m'], 'd', ['t'], ['c2'], 'out.md'))
         _, a = results.parse(['--coarse', 'c2', '--coarseCirculation', 'w2', '--coarseHeat',
                               'h2', '--coarseSpeedup', 's'])
         self.assertEqual((a.coarse, a.coarseCirculation, a.coarseHeat, a.coarseSpeedup),
@@ -203,6 +203,26 @@ class Defaults(unittest.TestCase):
         self.assertEqual(got['drytime.80C_1.3ums_n1500.spread'], ('0.0123', 'kg/kg'))
         self.assertEqual(got['drytime.60C_1.3ums_n1500.hours'], ('', 'h'))
         self.assertIn('not reached', [k for k in keys if k[0] == 'drytime.60C_1.3ums_n1500.hours'][0][4])
+        # the reduced bed's study and the full bed's, from two case copies,
+        # make one section with the keys and figures of both; the same point
+        # from both stops with one line
+        with tempfile.TemporaryDirectory() as d:
+            for name, n in (('reduced', 1500), ('full', 26000)):
+                os.makedirs(os.path.join(d, name))
+                with open(os.path.join(d, name, 'dryingTime.json'), 'w') as f:
+                    json.dump({'study': [dict(point, T_in_C=80, reached=1, hours=1.0,
+                                              particles=n)]}, f)
+                open(os.path.join(d, name, 'dryingTime_study.png'), 'w').close()
+            figures = os.path.join(d, 'figures')
+            dirs = [os.path.join(d, name) for name in ('reduced', 'full')]
+            rows, keys, pngs = results.build(None, None, None, figures, drytime=dirs)['drytime'][:3]
+            self.assertEqual(sorted(k[0] for k in keys if k[0].endswith('.hours')),
+                             ['drytime.80C_1.3ums.hours', 'drytime.80C_1.3ums_n1500.hours'])
+            self.assertEqual(sorted(pngs), ['drytime_study.png', 'drytime_study_n1500.png'])
+            with self.assertRaises(SystemExit) as twice:
+                results.build(None, None, None, figures, drytime=dirs + dirs[:1])
+            self.assertRegex(str(twice.exception), r'^results: --dryingTime \S+/reduced: .*'
+                             r'drytime.80C_1.3ums_n1500.hours.* also from an earlier --dryingTime')
 
     def test_coarse_speedup(self):
         o = coarsespeedup.options([])

@@ -1135,7 +1135,9 @@ def drytime_section(case):
         study_rows, study_keys = drytime_study(r['study'])
         rows += study_rows
         keys += study_keys
-        pngs.append(('dryingTime_study.png', 'drytime_study.png'))
+        n = r['study'][0]['particles']
+        pngs.append(('dryingTime_study.png', 'drytime_study%s.png' % ('' if n == 26000 else
+                                                                     '_n%d' % n)))
     return rows, keys, [p for p in pngs if os.path.isfile(os.path.join(case, p[0]))]
 
 
@@ -1285,8 +1287,7 @@ def build(ums, circ, heat, figure_dir, noplates=(), maps=None, mixing=(), drying
                     if f.startswith('profiles_u') and f.endswith('.png')]
             new['profiles'] = (rows, [], figures('profiles', circ, pngs))
     for name, case, section in (('spoutheight', spout_height, spout_height_section),
-                                ('heat', heat, heat_section), ('drying', drying, drying_section),
-                                ('drytime', drytime, drytime_section)):
+                                ('heat', heat, heat_section), ('drying', drying, drying_section)):
         if case:        # one case copy, one section
             rows, keys, pngs = section(case)
             new[name] = (rows, keys, figures(name, case, pngs))
@@ -1310,6 +1311,20 @@ def build(ums, circ, heat, figure_dir, noplates=(), maps=None, mixing=(), drying
             r, k, p = mixing_section(case)
             rows, keys, pngs = rows + r, keys + k, pngs + copy(case, p, figure_dir)
         new['mixing'] = (rows, keys, pngs)
+    if drytime:
+        # one section from every case copy given (the reduced bed's, the
+        # paper's full bed's), figures from each
+        remove_figures('drytime', figure_dir)
+        rows, keys, pngs = [], [], []
+        for case in drytime:
+            sources.setdefault('drytime', []).append(case)
+            r, k, p = drytime_section(case)
+            twice = {key[0] for key in k} & {key[0] for key in keys}
+            if twice:
+                sys.exit('results: --dryingTime %s: %s also from an earlier --dryingTime (one '
+                         'operating point per key)' % (case, ', '.join(sorted(twice))))
+            rows, keys, pngs = rows + r, keys + k, pngs + copy(case, p, figure_dir)
+        new['drytime'] = (rows, keys, pngs)
     if mixing_candidates:
         rows, keys, pngs = mixing_candidates_section(mixing_candidates,
                                                      needed_rate(new, figure_dir))
@@ -1412,8 +1427,9 @@ def parse(argv):
                    help='a case copy where protocols/heatTransfer ran (heat.csv)')
     p.add_argument('--drying', metavar='DRYING_DIR',
                    help='a case copy where protocols/drying ran (drying.json)')
-    p.add_argument('--dryingTime', metavar='DRYINGTIME_DIR',
-                   help='a case copy where protocols/dryingTime ran (dryingTime.json)')
+    p.add_argument('--dryingTime', action='append', default=[], metavar='DRYINGTIME_DIR',
+                   help='a case copy where protocols/dryingTime ran (dryingTime.json); repeat '
+                        'for several, e.g. the reduced bed and the full one')
     p.add_argument('--noplates', action='append', default=[], metavar='UMS_DIR',
                    help='a case copy where minimumSpouting --vessel no-plates ran, with '
                         '10 000 or 26 000 particles (repeat for both)')
