@@ -165,7 +165,7 @@ class Defaults(unittest.TestCase):
                           o['overrides']), (2.0, 6.0, 1.8, 0.15, 'both', None, 1, ['dryingModel=freeWater']))
         o = dryingtime.options([])
         self.assertEqual((o['u'], o['time'], o['average'], o['write'], o['part'], o['bin']),
-                         (2.0, 20.0, 18.0, 1.0, 'statistics', 0.05))
+                         (2.0, 16.0, 8.0, 1.0, 'statistics', 0.05))
         o = dryingtime.options(['--part', 'study'])
         self.assertEqual((o['temperatures'], o['velocities'], o['ums'], o['hours'],
                           o['samples']), ([60, 80, 100, 150], [1.1, 1.3, 1.6], None, 12, 10000))
