@@ -274,6 +274,12 @@ def summarize(case, lines, ws=None, png='circulation.png'):
         if h:
             lines.append('  halves, %s: means differ by %.3g s, %.1f standard errors'
                          % (k, h[0], abs(h[0]) / h[1] if h[1] > 0 else float('inf')))
+        else:
+            lines.append('  halves, %s: not compared, %d and %d visits ended within the halves '
+                         'of %.3g s (its visits outlast a half)'
+                         % ((k,) + tuple(stats['halves'][half][k]['samples']
+                                         for half in ('first', 'second'))
+                            + ((run['timeEnd'] - run['timeStart']) / 2,)))
     for k in DISTRIBUTIONS:
         km = kaplan_meier(stats, k)
         if km and km['censored']:

@@ -1065,7 +1065,9 @@ def drytime_section(case):
                   'mass / W_s (eq 14)', cycle_row(st), 'within 5 % (issue 24)', settings, wall),
                  ("the window's two halves: difference of the mean residences / its standard "
                   'error', ', '.join('%s %.1f' % (k, abs(h[0]) / h[1]) for k, h in
-                                     sorted(st['halves'].items()) if h and h[1] > 0),
+                                     sorted(st['halves'].items()) if h and h[1] > 0)
+                  + ''.join('; %s not compared (too few visits end within a half)' % k
+                            for k, h in sorted(st['halves'].items()) if not h),
                   'within the sampling error (about 2 or less)', settings, wall)]
         keys.append(('drytime.cycle_vs_Ws_rel' + ('' if label == 'u2' else '_' + label),
                      '%.3g' % st['cycle_vs_Ws_rel'], '', '0',
