@@ -64,6 +64,27 @@ def run_spoutfoam(end, ranks, who):
         sys.exit('%s: spoutFoam failed, see log.spoutFoam' % who)
 
 
+def wall_time(case):
+    """Wall time of the spoutFoam run(s) in case from their logs (ClockTime,
+    summed over restarts, so a segment killed before it could record its
+    time counts too) [s]."""
+    total = 0.0
+    for root, _, files in os.walk(case):
+        for f in files:
+            if f == 'log.spoutFoam':
+                last = 0.0
+                start = 0.0
+                for line in open(os.path.join(root, f), errors='replace'):
+                    m = re.match(r'ExecutionTime = [\d.e+-]+ s\s+ClockTime = (\d+) s', line)
+                    if m:
+                        value = float(m.group(1))
+                        if value < last:          # a restart: the clock began again
+                            start += last
+                        last = value
+                total += start + last
+    return total
+
+
 def run_particles(case='.'):
     """(number, source) of the particles a run had at its start: counted in
     its first particles/*.vtp, else the first row of postProcessing/

@@ -23,6 +23,7 @@ import shutil
 import subprocess
 import sys
 
+from spoutlab import caserun
 from spoutlab import spoutdrying
 from spoutlab import spoutedbed
 from spoutlab.protocols import heattransfer
@@ -78,7 +79,7 @@ def bed(o):
     try:
         lines = []
         r = spoutdrying.summarize(g, o['average'], lines, pictures_drawn=False)
-        wall = sum(float(x) for x in open('log.wallTime')) if os.path.isfile('log.wallTime') else 0
+        wall = caserun.wall_time('.')
     finally:
         heattransfer.inside(here)
     r.update(particles=int(g.particles['nParticles']), u_s=o['u'], time=o['time'],

@@ -70,6 +70,7 @@ import sys
 import time
 
 from spoutlab import casefiles as sc
+from spoutlab import caserun
 from spoutlab import circulationstats
 from spoutlab import moistair
 from spoutlab import spoutedbed
@@ -144,7 +145,6 @@ def statistics(o):
     check = circulationstats.cycle_vs_ws(stats, run['particles'] * run['particleMass'], ws)
     halves = {k: circulationstats.halves_agreement(stats, k)
               for k in circulationstats.DISTRIBUTIONS}
-    wall = os.path.join(work, 'log.wallTime')
     r = dict(run=work, u_s=o['u'], time=o['time'], average=o['average'],
              particles=run['particles'], Ws=ws, cycle_vs_Ws_rel=check['cycle']['little'],
              downcomer_vs_Ws_rel=check['downcomer']['little'], checks=check,
@@ -153,7 +153,7 @@ def statistics(o):
              residence={k: stats['residence'][k]['mean'] for k in circulationstats.DISTRIBUTIONS},
              visits={k: stats['residence'][k]['samples'] for k in circulationstats.DISTRIBUTIONS},
              halves={k: (list(h) if h else None) for k, h in halves.items()},
-             wall_s=sum(float(x) for x in open(wall)) if os.path.isfile(wall) else 0.0)
+             wall_s=caserun.wall_time(work))
     shutil.copy(os.path.join(work, 'circulation.json'), 'circulation_u%g.json' % o['u'])
     shutil.copy(os.path.join(work, 'circulation.png'), 'dryingTime_circulation_u%g.png' % o['u'])
     return r, lines
@@ -401,8 +401,7 @@ def consistency(o):
              exchange_share={k[:-len('_exchange_share')]: float(v) for k, v in summ.items()
                              if k.endswith('_exchange_share')},
              visits={k: stats['residence'][k]['samples'] for k in circulationstats.DISTRIBUTIONS},
-             wall_s=sum(float(x) for x in open(os.path.join(work, 'log.wallTime')))
-             if os.path.isfile(os.path.join(work, 'log.wallTime')) else 0.0)
+             wall_s=caserun.wall_time(work))
     lines = [
         'direct run: %d kernels, %s, inlet %.1f C (W %g), u_s %g m/s, Hd %g m; window %g s from '
         't = %g s; bed-mean X %.6f -> %.6f kg/kg d.b., kernel T %.2f -> %.2f C'

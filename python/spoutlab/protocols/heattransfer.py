@@ -20,7 +20,6 @@ import os
 import shutil
 import subprocess
 import sys
-import time
 
 from spoutlab import cli
 from spoutlab import foamfile
@@ -88,10 +87,7 @@ def run(o, work, name='heatTransfer', extra=(), entries=None):
         if entries:
             entries()
         if (caserun.last_time('log.spoutFoam') or 0.0) < o['time'] - 1e-3:
-            t0 = time.time()
             caserun.run_spoutfoam(o['time'], o['np'], name)
-            with open('log.wallTime', 'a') as f:
-                f.write('%.0f\n' % (time.time() - t0))
         with open('log.evaluate', 'w') as log:
             if subprocess.call(['./evaluate', '--window', '%g' % o['average']],
                                stdout=log, stderr=subprocess.STDOUT) != 0:
@@ -107,7 +103,7 @@ def report(o, work):
     inside(work)
     try:
         r = spoutheat.summarize(g, o['average'], lines, pictures=False)
-        wall = sum(float(x) for x in open('log.wallTime')) if os.path.isfile('log.wallTime') else 0
+        wall = caserun.wall_time('.')
     finally:
         inside(here)
     text = ['gas-to-particle heat transfer (draft-plate paper, section 4.7): %d particles, '

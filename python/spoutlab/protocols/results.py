@@ -40,26 +40,6 @@ def read_json(case, name, remedy):
                  % (path, e.strerror if isinstance(e, OSError) else 'not JSON: %s' % e, remedy))
 
 
-def wall_time(case):
-    """Wall time of the spoutFoam run(s) from their logs (ClockTime, summed
-    over restarts)."""
-    total = 0.0
-    for root, _, files in os.walk(case):
-        for f in files:
-            if f == 'log.spoutFoam':
-                last = 0.0
-                start = 0.0
-                for line in open(os.path.join(root, f), errors='replace'):
-                    m = re.match(r'ExecutionTime = [\d.e+-]+ s\s+ClockTime = (\d+) s', line)
-                    if m:
-                        value = float(m.group(1))
-                        if value < last:          # a restart: the clock began again
-                            start += last
-                        last = value
-                total += start + last
-    return total
-
-
 class UmsRun:
     """What protocols/minimumSpouting wrote in a case: its numbers (ums.json)
     and its steps (ums.csv)."""
@@ -69,7 +49,7 @@ class UmsRun:
         r = read_json(case, 'ums.json', 'protocols/minimumSpouting --report with its options')
         self.particles, self.bed, self.plates = r['particles'], r['bed_height_m'], r['plates']
         self.settings = r['settings']
-        self.hours = wall_time(case) / 3600
+        self.hours = caserun.wall_time(case) / 3600
         rows = [r.strip().split(',') for r in list(open(os.path.join(case, 'ums.csv')))[1:]]
         self.steps = [(float(r[0]), r[1], float(r[2]), r[4] == '1' if len(r) > 4 else None)
                       for r in rows]
@@ -306,7 +286,7 @@ def coarse_circulation(case, ref):
         row, key = against_one('cg%g' % cg, 'Ws_%s_kg_s' % mu, 'W_s, %s, cg = %g against cg = 1'
                                % (mu, cg), p['W_s_kg_s'], 'kg/s',
                                ref.get('draft.Ws_%s_kg_s' % mu, ''), settings,
-                               '%.2f h' % (wall_time(work) / 3600))
+                               '%.2f h' % (caserun.wall_time(work) / 3600))
         rows.append(row)
         keys.append(key)
         shots = sorted(f for f in os.listdir(work) if f.startswith('snapshot_')
@@ -356,7 +336,7 @@ def bed3d_section(case, k):
                 'steps %s m/s' % (u['particles'], spoutedbed3d.load(case).seed,
                                   u['bed_depth_m'], u['D_c_m'], u['D_i_m'],
                                   ' '.join('%g' % s['u_s'] for s in u['steps'])))
-    hours = '%.2f h' % (wall_time(case) / 3600)
+    hours = '%.2f h' % (caserun.wall_time(case) / 3600)
     ref = u['mathur_gishler_u_ms_m_s']
     if u['u_ms_m_s'] is None:
         return [('u_ms, 3-D bed', 'none: no spouting step on the decreasing branch',
@@ -500,7 +480,7 @@ def maps_section(case):
     rows, figures = [], []
     for run in maps['runs']:
         label, n, u = run['label'], run['particles'], '%g' % run['u_m_s']
-        hours = wall_time(os.path.join(case, 'runs', label)) / 3600
+        hours = caserun.wall_time(os.path.join(case, 'runs', label)) / 3600
         paper = '%g m' % NOPLATE_BEDS[n] if n in NOPLATE_BEDS else ''
         rows.append(('settled bed, %d particles' % n, '%.3f m' % run['bed_height_m'], paper,
                      settings, '%.2f h' % hours))
@@ -551,7 +531,7 @@ def mixing_section(case):
         tag = '' if float(t_run) == mixing_protocol.DEFAULT_TIME else '_t%g' % float(t_run)
         paper = mixing_paper(vessel, n, u)
         paper_value = paper.split(' ')[0] if paper[:1].isdigit() else ''
-        hours = '%.2f h' % (wall_time(os.path.join(case, 'runs', label)) / 3600)
+        hours = '%.2f h' % (caserun.wall_time(os.path.join(case, 'runs', label)) / 3600)
         what = '%s, %d particles, u_s = %.1f m/s' % (
             'no draft plates' if vessel == 'no-plates' else 'draft plates', n, u)
         run_settings = '%s; %s s; W_s %.3f kg/s, turnover m_bed/W_s %.2f s' % (
@@ -627,7 +607,7 @@ def mixing_candidates_section(case, needed):
     reference = [c['W_s_kg_s'] for c in numbers['runs'] if c['name'] == 'reference'][0]
     for c in numbers['runs']:
         rel = c['W_s_kg_s'] / reference - 1
-        hours = '%.2f h' % (wall_time(os.path.join(case, 'runs', c['label'])) / 3600)
+        hours = '%.2f h' % (caserun.wall_time(os.path.join(case, 'runs', c['label'])) / 3600)
         change = ' '.join(c['changes']) or 'none'
         spouts = '' if c['spouts'] else '; by the spout classifier the bed does not ' \
             'spout (%s): W_s is then no spout-downcomer circulation' % c['regime']
@@ -775,7 +755,7 @@ def profile_rows(case):
                          '%s: lower %.3f, upper %.3f m/s' % ('yes' if f['holds'] else 'NO',
                                                               f['lower_m_s'], f['upper_m_s']),
                          'yes (Figs 4a, 5)', 'profiles protocol; lower region z/R_d < 12',
-                         '%.2f h' % (wall_time(os.path.join(case, 'runs', 'He95_u%s' % u))
+                         '%.2f h' % (caserun.wall_time(os.path.join(case, 'runs', 'He95_u%s' % u))
                                      / 3600)))
     return rows
 
@@ -802,7 +782,7 @@ def spout_height_rows(case, u_ms):
                      'u_s = %s m/s%s; z/R_d %.1f to %.1f'
                      % (u, ' = %.2f u_ms' % (float(u) / u_ms) if u_ms else '', series[0][0],
                         z_end),
-                     '%.2f h' % (wall_time(os.path.join(runs, label)) / 3600)))
+                     '%.2f h' % (caserun.wall_time(os.path.join(runs, label)) / 3600)))
     return rows
 
 
@@ -870,7 +850,7 @@ def circulation_rows(case, study):
                          '%.3f kg/s (eq %s)' % (ref, '15' if study == 'velocity' else '16'),
                          'u_s = %.2f m/s; %s%s' % (p['u_m_s'], how, '; this run to %g s'
                                                    % p['time_s'] if various else ''),
-                         '%.2f h' % (wall_time(os.path.join(case, 'runs', label)) / 3600)))
+                         '%.2f h' % (caserun.wall_time(os.path.join(case, 'runs', label)) / 3600)))
             if study == 'friction' and ws > 0:
                 mus.append(float(label[2:label.index('_')]))
                 logs.append(math.log10(ws))

@@ -41,7 +41,6 @@ from spoutlab import profilefeatures
 from spoutlab import spoutedbed
 from spoutlab import spoutheat
 from spoutlab.protocols import circulation
-from spoutlab.protocols import results
 
 # One run: its name (runs/height_<name>), the suffix of its keys in
 # docs/results.csv (spout.dVp_dz_<key>), u_s [m/s], what it is, the
@@ -286,7 +285,7 @@ def analyse(o, r):
             'Re_plate_over_axis': plate_over_axis(g, across, 'Re', spoutheat.BAND),
             'slugs': count, 'slugs_per_s': rate, 'slug_share': share,
             'eps_probe': eps_probe, 'lost': caserun.lost_particles(work),
-            'wall_s': results.wall_time(work)}
+            'wall_s': caserun.wall_time(work)}
 
 
 def write_csv(analysed, path='spoutHeight.csv'):
