@@ -152,6 +152,13 @@ def statistics(o):
              cycle_little_s=circulationstats.littles_mean(stats, 'cycle'),
              residence={k: stats['residence'][k]['mean'] for k in circulationstats.DISTRIBUTIONS},
              visits={k: stats['residence'][k]['samples'] for k in circulationstats.DISTRIBUTIONS},
+             # every visit, ended or open at the window's end, and the mean
+             # over them all (Little's law): what the predictor takes
+             entries={k: stats['residence'][k]['samples']
+                      + stats['residence'][k].get('censored', {}).get('samples', 0)
+                      for k in circulationstats.DISTRIBUTIONS},
+             little={k: circulationstats.littles_mean(stats, k)
+                     for k in circulationstats.DISTRIBUTIONS},
              halves={k: (list(h) if h else None) for k, h in halves.items()},
              wall_s=caserun.wall_time(work))
     shutil.copy(os.path.join(work, 'circulation.json'), 'circulation_u%g.json' % o['u'])

@@ -1020,9 +1020,11 @@ def cycle_row(st):
     c = st['checks']['cycle']
     km = ('Kaplan-Meier %+.1f %%' % (100 * c['km']) if c['km'] == c['km'] else
           'Kaplan-Meier: %.0f %% of the cycles last beyond the window' % (100 * c['beyond']))
-    return ('%.3g s against %.3g s: %+.1f %%; %s; the %d completed cycles %.3g s (%+.1f %%)'
-            % (st['cycle_little_s'], st['cycle_expected_s'], 100 * rel, km,
-               st['visits']['cycle'], st['residence']['cycle'], 100 * c['completed']))
+    ended = ('the %d completed cycles %.3g s (%+.1f %%)'
+             % (st['visits']['cycle'], st['residence']['cycle'], 100 * c['completed'])
+             if st['visits']['cycle'] else 'no cycle ended within the window')
+    return ('%.3g s against %.3g s: %+.1f %%; %s; %s'
+            % (st['cycle_little_s'], st['cycle_expected_s'], 100 * rel, km, ended))
 
 
 def drytime_section(case):
@@ -1036,11 +1038,18 @@ def drytime_section(case):
                     'statistics and W_s over the last %g s' % (st['particles'], st['u_s'],
                                                                 st['time'], st['average']))
         wall = '%.2f h' % (st['wall_s'] / 3600)
-        res, n = st['residence'], st['visits']
-        rows += [('mean residence: spout / fountain / downcomer / entrainment zone',
-                  ' / '.join('%.3g s (%d)' % (res[k], n[k])
-                             for k in ('spout', 'fountain', 'downcomer', 'entrainment')), '',
-                  settings, wall),
+        regions = ('spout', 'fountain', 'downcomer', 'entrainment')
+        if 'little' in st:    # the visits open at the window's end too
+            residence = ('mean residence by Little\'s law (visits: ended + open at the window\'s '
+                         'end): spout / fountain / downcomer / entrainment zone',
+                         ' / '.join('%.3g s (%d + %d)' % (st['little'][k], st['visits'][k],
+                                                          st['entries'][k] - st['visits'][k])
+                                    for k in regions))
+        else:
+            residence = ('mean residence: spout / fountain / downcomer / entrainment zone',
+                         ' / '.join('%.3g s (%d)' % (st['residence'][k], st['visits'][k])
+                                    for k in regions))
+        rows += [residence + ('', settings, wall),
                  ("mean cycle by Little's law (all particles / spout entry rate) against bed "
                   'mass / W_s (eq 14)', cycle_row(st), 'within 5 % (issue 24)', settings, wall),
                  ("the window's two halves: difference of the mean residences / its standard "
