@@ -264,6 +264,21 @@ class LostParticles(unittest.TestCase):
         self.assertEqual(caserun.lost_text(3), '; 3 particles lost')
         self.assertEqual(caserun.lost_text(0), '')
 
+    def test_wall_time_over_restarts(self):
+        # a run killed at 5 s of its clock and continued for 3 s more, and a
+        # second run below the case: 5 + 3 + 2 s, whatever log.wallTime says
+        from spoutlab import caserun
+        case = self.case()
+        clock = lambda seconds: ''.join('ExecutionTime = %g s  ClockTime = %d s\n' % (0.9 * s, s)
+                                        for s in seconds)
+        open(os.path.join(case, 'log.spoutFoam'), 'w').write(
+            clock([1, 2, 5]) + 'Time = 0.3\n' + clock([0, 1, 3]))
+        os.makedirs(os.path.join(case, 'runs', 'p'))
+        open(os.path.join(case, 'runs', 'p', 'log.spoutFoam'), 'w').write(clock([1, 2]))
+        open(os.path.join(case, 'log.wallTime'), 'w').write('3\n')
+        self.assertEqual(caserun.wall_time(case), 10.0)
+        self.assertEqual(caserun.wall_time(os.path.join(case, 'runs', 'p')), 2.0)
+
     def finished_run(self, case, options):
         work = os.path.join(case, 'runs', 'p')
         os.makedirs(os.path.join(work, 'constant'))
