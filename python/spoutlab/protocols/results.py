@@ -1053,7 +1053,8 @@ def drytime_section(case):
                  ("mean cycle by Little's law (all particles / spout entry rate) against bed "
                   'mass / W_s (eq 14)', cycle_row(st), 'within 5 % (issue 24)', settings, wall),
                  ("the window's two halves: difference of the mean residences / its standard "
-                  'error', ', '.join('%s %.1f' % (k, abs(h[0]) / h[1]) for k, h in
+                  'error of independent visits (visits that move together, as in slugs, make '
+                  'the true error larger)', ', '.join('%s %.1f' % (k, abs(h[0]) / h[1]) for k, h in
                                      sorted(st['halves'].items()) if h and h[1] > 0)
                   + ''.join('; %s not compared (too few visits end within a half)' % k
                             for k, h in sorted(st['halves'].items()) if not h),
