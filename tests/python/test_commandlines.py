@@ -203,6 +203,15 @@ class Defaults(unittest.TestCase):
         self.assertEqual(got['drytime.80C_1.3ums_n1500.spread'], ('0.0123', 'kg/kg'))
         self.assertEqual(got['drytime.60C_1.3ums_n1500.hours'], ('', 'h'))
         self.assertIn('not reached', [k for k in keys if k[0] == 'drytime.60C_1.3ums_n1500.hours'][0][4])
+        # a call that ran 1.6 u_ms keeps the earlier call's 1.3 (same bed)
+        # and replaces its own points; another bed's rows go
+        one = lambda k, T, n=1500, hours=1.0: dict(point, u_over_ums=k, T_in_C=T, particles=n,
+                                                   hours=hours)
+        merged = dryingtime.merged_study(
+            [one(1.3, 80), one(1.6, 80, hours=9.0), one(1.3, 60, n=26000)],
+            [one(1.6, 80), one(1.6, 60)])
+        self.assertEqual([(q['u_over_ums'], q['T_in_C'], q['hours']) for q in merged],
+                         [(1.3, 80, 1.0), (1.6, 60, 1.0), (1.6, 80, 1.0)])
         # the reduced bed's study and the full bed's, from two case copies,
         # make one section with the keys and figures of both; the same point
         # from both stops with one line

@@ -59,6 +59,8 @@ spouted) takes from the CFD-DEM, and how it compares with it.
               dryingTime_study.png; keys drytime.<T>C_<k>ums.hours,
               .kWh_per_kg, .Tmax_K, .spread, with _n<N> after the point
               for a bed of N particles other than the paper's 26 000).
+              A call for some velocities or temperatures keeps the points
+              of earlier calls on the same bed that it did not run.
 Writes dryingTime.txt and dryingTime.json here (read by protocols/results).
 """
 import json
@@ -517,9 +519,24 @@ def study_plot(rows):
     sc.plot('dryingTime_study.png', script + 'unset multiplot\n', size=(1100, 850))
 
 
-def study(o):
+def merged_study(earlier, rows):
+    """The study's rows after a call that ran `rows`: the earlier rows of the
+    same bed (particles, u_ms) at points it did not run are kept, so that
+    velocities run one call at a time add up; sorted by velocity, then
+    temperature."""
+    if not rows:
+        return list(earlier)
+    bed = (rows[0]['particles'], rows[0]['ums'])
+    ran = {(r['u_over_ums'], r['T_in_C']) for r in rows}
+    kept = [q for q in earlier if (q['particles'], q['ums']) == bed
+            and (q['u_over_ums'], q['T_in_C']) not in ran]
+    return sorted(kept + rows, key=lambda q: (q['u_over_ums'], q['T_in_C']))
+
+
+def study(o, earlier=()):
     """The design study: a statistics run per velocity (cached), a batch per
-    temperature; its rows and summary lines."""
+    temperature; its rows (with those of earlier calls, merged_study) and
+    summary lines."""
     # the case's drying settings (its drying model and constants, the gas's
     # vapour diffusivity) whatever the statistics runs' moisture setting
     g = spoutedbed.load('.', o['overrides'] + ['heat=yes', 'moisture=yes'])
@@ -566,6 +583,7 @@ def study(o):
                          % (T, '%.2f h to 15 %%' % r['hours'] if r['reached']
                             else 'not at 15 %% after %g h' % o['hours'], r['kWh_per_kg'],
                             r['Tmax_C'], r['spread'], r['wall_s']))
+    rows = merged_study(earlier, rows)
     study_plot(rows)
     return rows, lines
 
@@ -574,7 +592,7 @@ def main(argv):
     o = options(argv)
     numbers = json.load(open('dryingTime.json')) if os.path.isfile('dryingTime.json') else {}
     if o['part'] == 'study':
-        rows, lines = study(o)
+        rows, lines = study(o, numbers.get('study', []))
         numbers['study'] = rows
         text = ['the design study of the bed with draft plates (issue 24 item 5)']
     elif o['part'] == 'consistency':
