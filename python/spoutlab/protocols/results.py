@@ -1027,6 +1027,47 @@ def cycle_row(st):
             % (st['cycle_little_s'], st['cycle_expected_s'], 100 * rel, km, ended))
 
 
+def drytime_statistics(label, st):
+    """The rows, keys and figures of one operating point's circulation
+    statistics (dryingTime.json's statistics/<label>)."""
+    rows, keys, pngs = [], [], []
+    settings = ('%d particles, draft plates, u_s = %g m/s, hot air (heat on), %g s; '
+                'statistics and W_s over the last %g s' % (st['particles'], st['u_s'],
+                                                            st['time'], st['average']))
+    wall = '%.2f h' % (st['wall_s'] / 3600)
+    regions = ('spout', 'fountain', 'downcomer', 'entrainment')
+    if 'little' in st:    # the visits open at the window's end too
+        residence = ('mean residence by Little\'s law (visits: ended + open at the window\'s '
+                     'end): spout / fountain / downcomer / entrainment zone',
+                     ' / '.join('%.3g s (%d + %d)' % (st['little'][k], st['visits'][k],
+                                                      st['entries'][k] - st['visits'][k])
+                                for k in regions))
+    else:
+        residence = ('mean residence: spout / fountain / downcomer / entrainment zone',
+                     ' / '.join('%.3g s (%d)' % (st['residence'][k], st['visits'][k])
+                                for k in regions))
+    halves = sorted(st['halves'].items())
+    rows += [residence + ('', settings, wall),
+             ("mean cycle by Little's law (all particles / spout entry rate) against bed "
+              'mass / W_s (eq 14)', cycle_row(st), 'within 5 % (issue 24)', settings, wall),
+             ("the window's two halves: difference of the mean residences / its standard "
+              'error of independent visits (visits that move together, as in slugs, make '
+              'the true error larger)',
+              ', '.join('%s %.1f' % (k, abs(h[0]) / h[1]) for k, h in halves if h and h[1] > 0)
+              + ''.join('; %s not compared (too few visits end within a half)' % k
+                        for k, h in halves if not h),
+              'within the sampling error (about 2 or less)', settings, wall)]
+    keys.append(('drytime.cycle_vs_Ws_rel' + ('' if label == 'u2' else '_' + label),
+                 '%.3g' % st['cycle_vs_Ws_rel'], '', '0',
+                 ("mean cycle by Little's law / (bed mass / W_s) - 1, W_s of eq 14 %.4g "
+                  'kg/s; ' if 'cycle_little_s' in st else
+                  'mean cycle / (bed mass / W_s) - 1, W_s of eq 14 %.4g kg/s; ') % st['Ws']
+                 + settings))
+    pngs.append(('dryingTime_circulation_%s.png' % label,
+                 'drytime_circulation_%s.png' % label))
+    return rows, keys, pngs
+
+
 def drytime_section(case):
     """The long-time predictor's side of the CFD-DEM from protocols/
     dryingTime's dryingTime.json: the circulation statistics per operating
@@ -1034,39 +1075,8 @@ def drytime_section(case):
     r = read_json(case, 'dryingTime.json', 'protocols/dryingTime with its options')
     rows, keys, pngs = [], [], []
     for label, st in sorted(r.get('statistics', {}).items()):
-        settings = ('%d particles, draft plates, u_s = %g m/s, hot air (heat on), %g s; '
-                    'statistics and W_s over the last %g s' % (st['particles'], st['u_s'],
-                                                                st['time'], st['average']))
-        wall = '%.2f h' % (st['wall_s'] / 3600)
-        regions = ('spout', 'fountain', 'downcomer', 'entrainment')
-        if 'little' in st:    # the visits open at the window's end too
-            residence = ('mean residence by Little\'s law (visits: ended + open at the window\'s '
-                         'end): spout / fountain / downcomer / entrainment zone',
-                         ' / '.join('%.3g s (%d + %d)' % (st['little'][k], st['visits'][k],
-                                                          st['entries'][k] - st['visits'][k])
-                                    for k in regions))
-        else:
-            residence = ('mean residence: spout / fountain / downcomer / entrainment zone',
-                         ' / '.join('%.3g s (%d)' % (st['residence'][k], st['visits'][k])
-                                    for k in regions))
-        rows += [residence + ('', settings, wall),
-                 ("mean cycle by Little's law (all particles / spout entry rate) against bed "
-                  'mass / W_s (eq 14)', cycle_row(st), 'within 5 % (issue 24)', settings, wall),
-                 ("the window's two halves: difference of the mean residences / its standard "
-                  'error of independent visits (visits that move together, as in slugs, make '
-                  'the true error larger)', ', '.join('%s %.1f' % (k, abs(h[0]) / h[1]) for k, h in
-                                     sorted(st['halves'].items()) if h and h[1] > 0)
-                  + ''.join('; %s not compared (too few visits end within a half)' % k
-                            for k, h in sorted(st['halves'].items()) if not h),
-                  'within the sampling error (about 2 or less)', settings, wall)]
-        keys.append(('drytime.cycle_vs_Ws_rel' + ('' if label == 'u2' else '_' + label),
-                     '%.3g' % st['cycle_vs_Ws_rel'], '', '0',
-                     ("mean cycle by Little's law / (bed mass / W_s) - 1, W_s of eq 14 %.4g "
-                      'kg/s; ' if 'cycle_little_s' in st else
-                      'mean cycle / (bed mass / W_s) - 1, W_s of eq 14 %.4g kg/s; ') % st['Ws']
-                     + settings))
-        pngs.append(('dryingTime_circulation_%s.png' % label,
-                     'drytime_circulation_%s.png' % label))
+        more = drytime_statistics(label, st)
+        rows, keys, pngs = rows + more[0], keys + more[1], pngs + more[2]
     c = r.get('consistency')
     if c:
         settings = ('%d particles, draft plates at Hd = %g m, u_s = %g m/s, inlet %.0f C (W %g), '
@@ -1224,6 +1234,23 @@ def coarse_runs_section(coarse, runs, figure_dir):
     return rows, keys, pngs
 
 
+def drytime_sections(cases, figure_dir, sources):
+    """One drying-time section from every dryingTime case copy given (the
+    reduced bed's, the paper's full bed's), figures from each; a key from
+    two copies stops with one line."""
+    remove_figures('drytime', figure_dir)
+    rows, keys, pngs = [], [], []
+    for case in cases:
+        sources.setdefault('drytime', []).append(case)
+        r, k, p = drytime_section(case)
+        twice = {key[0] for key in k} & {key[0] for key in keys}
+        if twice:
+            sys.exit('results: --dryingTime %s: %s also from an earlier --dryingTime (one '
+                     'operating point per key)' % (case, ', '.join(sorted(twice))))
+        rows, keys, pngs = rows + r, keys + k, pngs + copy(case, p, figure_dir)
+    return rows, keys, pngs
+
+
 def build(ums, circ, heat, figure_dir, noplates=(), maps=None, mixing=(), drying=None,
           drytime=None, coarse=(), bed3d=(), coarse_runs=None, mixing_candidates=None,
           spout_height=None):
@@ -1295,8 +1322,7 @@ def build(ums, circ, heat, figure_dir, noplates=(), maps=None, mixing=(), drying
     if maps:
         rows, keys, pngs = maps_section(maps)
         new['maps'] = (rows, keys, figures('maps', maps, pngs))
-    if mixing:
-        # one section from every case copy given, figures from each
+    if mixing:          # one section from every copy given, as drytime_sections
         remove_figures('mixing', figure_dir)
         rows, keys, pngs = [], [], []
         for case in mixing:
@@ -1304,19 +1330,7 @@ def build(ums, circ, heat, figure_dir, noplates=(), maps=None, mixing=(), drying
             rows, keys, pngs = rows + r, keys + k, pngs + copy(case, p, figure_dir)
         new['mixing'] = (rows, keys, pngs)
     if drytime:
-        # one section from every case copy given (the reduced bed's, the
-        # paper's full bed's), figures from each
-        remove_figures('drytime', figure_dir)
-        rows, keys, pngs = [], [], []
-        for case in drytime:
-            sources.setdefault('drytime', []).append(case)
-            r, k, p = drytime_section(case)
-            twice = {key[0] for key in k} & {key[0] for key in keys}
-            if twice:
-                sys.exit('results: --dryingTime %s: %s also from an earlier --dryingTime (one '
-                         'operating point per key)' % (case, ', '.join(sorted(twice))))
-            rows, keys, pngs = rows + r, keys + k, pngs + copy(case, p, figure_dir)
-        new['drytime'] = (rows, keys, pngs)
+        new['drytime'] = drytime_sections(drytime, figure_dir, sources)
     if mixing_candidates:
         rows, keys, pngs = mixing_candidates_section(mixing_candidates,
                                                      needed_rate(new, figure_dir))

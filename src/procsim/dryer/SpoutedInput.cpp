@@ -83,8 +83,8 @@ long readCounts(const YamlInput& r, Residence& res)
 // n >= (cv/0.05)^2; by Little's law, whose error is 1/sqrt(entries), 400
 // entries, completed or open -- the full bed's downcomer visits outlast a
 // window of 20 s, and none may have ended in it.
-Residence readResidence(const YamlInput& r, const YamlInput& conditions, const std::vector<std::string>& states,
-                        const std::string& entering)
+Residence readResidence(const YamlInput& r, const YamlInput& conditions,
+                        const std::vector<std::string>& states, const std::string& entering)
 {
     Residence res;
     res.binWidth = r.within("binWidth", 1e-9, 1e6, "s");
@@ -112,8 +112,8 @@ Residence readResidence(const YamlInput& r, const YamlInput& conditions, const s
     if (res.samples + opened < need)
     {
         const std::string which =
-            opened > 0 ? " residence times, completed or open at the window's end (" + std::to_string(res.samples)
-                             + " + " + std::to_string(opened) + ")"
+            opened > 0 ? " residence times, completed or open at the window's end ("
+                             + std::to_string(res.samples) + " + " + std::to_string(opened) + ")"
                        : " residence times (the mean within 5 % at cv " + formatNumber(cv, 3) + ")";
         throw r.error("samples", "at least " + std::to_string(need) + which
                                      + ": too few cycles for a distribution; average over a longer run");
