@@ -50,6 +50,21 @@ double Moments::mean() const
     return samples > 0 ? sum / samples : 0.0;
 }
 
+Moments& Moments::operator+=(const Moments& other)
+{
+    samples += other.samples;
+    sum += other.sum;
+    sumSquares += other.sumSquares;
+    return *this;
+}
+
+Moments ResidenceDistribution::half(int h) const
+{
+    Moments m;
+    for (int b = 0; b < batchesPerHalf; ++b) m += batches[std::size_t(h * batchesPerHalf + b)];
+    return m;
+}
+
 double Moments::std() const
 {
     if (samples < 2) return 0.0;
@@ -89,10 +104,15 @@ void CirculationStatistics::addResidence(int index, double tau, double t)
     // the visit alone, the first half would hold only the visits short
     // enough to end in it); one straddling the split counts in neither
     const double begin = t - tau;
-    if (t < halfSplit_)
-        d.halves[0].add(tau);
-    else if (begin >= halfSplit_)
-        d.halves[1].add(tau);
+    const int half = t < halfSplit_ ? 0 : begin >= halfSplit_ ? 1 : -1;
+    if (half < 0) return;
+    // its batch by when it ends, counted from the half's start
+    const double length = (halfSplit_ - averageStart_) / ResidenceDistribution::batchesPerHalf;
+    const double from = half == 0 ? averageStart_ : halfSplit_;
+    const int batch = length > 0 ? std::clamp(int(std::floor((t - from) / length)), 0,
+                                              ResidenceDistribution::batchesPerHalf - 1)
+                                 : 0;
+    d.batches[std::size_t(half * ResidenceDistribution::batchesPerHalf + batch)].add(tau);
 }
 
 void CirculationStatistics::enter(double t, int state, double* track)
@@ -241,10 +261,8 @@ std::vector<double> CirculationStatistics::pack(std::size_t minBins, bool counts
     const std::size_t bins = std::max(minBins, this->bins());
     for (const ResidenceDistribution& d : residence_)
     {
-        for (const Moments* m : {&d.all, &d.halves[0], &d.halves[1]})
-        {
-            p.insert(p.end(), {m->samples, m->sum, m->sumSquares});
-        }
+        p.insert(p.end(), {d.all.samples, d.all.sum, d.all.sumSquares});
+        for (const Moments& m : d.batches) p.insert(p.end(), {m.samples, m.sum, m.sumSquares});
     }
     p.push_back(double(bins));
     for (const ResidenceDistribution& d : residence_)
@@ -261,7 +279,9 @@ constexpr std::size_t fixedPackSize =
     2 + 3 * nCirculationRegions + nCirculationRegions * nSampleQuantities
     + CirculationStatistics::coreStates.size()
           * (1 + nSampleQuantities + CirculationStatistics::nCoreFractionBins)
-    + (nCirculationRegions + 1) * 9;
+    + (nCirculationRegions + 1) * 3 * (1 + 2 * ResidenceDistribution::batchesPerHalf);
+// the moments a distribution had before the halves had batches
+constexpr std::size_t momentsWithoutBatches = 9;
 
 } // namespace
 
@@ -295,12 +315,13 @@ void CirculationStatistics::add(const std::vector<double>& packed)
     }
     for (ResidenceDistribution& d : residence_)
     {
-        for (Moments* m : {&d.all, &d.halves[0], &d.halves[1]})
-        {
-            m->samples += packed[k++];
-            m->sum += packed[k++];
-            m->sumSquares += packed[k++];
-        }
+        auto addMoments = [&](Moments& m) {
+            m.samples += packed[k++];
+            m.sum += packed[k++];
+            m.sumSquares += packed[k++];
+        };
+        addMoments(d.all);
+        for (Moments& m : d.batches) addMoments(m);
     }
     ++k;
     for (ResidenceDistribution& d : residence_)
@@ -326,6 +347,28 @@ void CirculationStatistics::unpack(const std::vector<double>& packed)
 {
     clear();
     add(packed);
+}
+
+std::vector<double> CirculationStatistics::withoutBatchesUpgraded(const std::vector<double>& packed)
+{
+    const std::size_t distributions = nCirculationRegions + 1;
+    const std::size_t momentsAt =
+        fixedPackSize - distributions * 3 * (1 + 2 * ResidenceDistribution::batchesPerHalf);
+    if (packed.size() < momentsAt + distributions * momentsWithoutBatches + 1)
+        throw std::invalid_argument("CirculationStatistics: packed data too short");
+    std::vector<double> p(packed.begin(), packed.begin() + long(momentsAt));
+    const double* old = packed.data() + momentsAt;
+    for (std::size_t d = 0; d < distributions; ++d, old += momentsWithoutBatches)
+    {
+        p.insert(p.end(), old, old + 3); // all
+        for (int h = 0; h < 2; ++h)
+        {
+            p.insert(p.end(), old + 3 * (h + 1), old + 3 * (h + 2));
+            p.insert(p.end(), 3 * (ResidenceDistribution::batchesPerHalf - 1), 0.0);
+        }
+    }
+    p.insert(p.end(), old, packed.data() + packed.size()); // bins and histograms
+    return p;
 }
 
 } // namespace spoutlab

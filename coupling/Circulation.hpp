@@ -56,7 +56,11 @@
 // [i w, (i + 1) w)) and into the moments of the whole window and of its two
 // halves, each half taken as a window of its own: a visit counts in the half
 // in which it begins and ends (one straddling the split in neither), so that
-// both halves cut long visits off alike and agree for a steady bed.
+// both halves cut long visits off alike and agree for a steady bed. Each
+// half's moments are kept in batchesPerHalf batches of equal length, a visit
+// in the batch it ends in: successive visits are not independent (a slug
+// carries many particles through the spout together), and the scatter of the
+// batch means gives the half's mean an error that counts that (batch means).
 //
 // Everything the statistics hold is a sum: pack() gives it as one vector
 // whose element-wise sum over the ranks (packed to the same number of bins)
@@ -133,13 +137,18 @@ struct Moments
     void add(double value);
     double mean() const;
     double std() const; // sample standard deviation (n - 1); 0 below two samples
+    Moments& operator+=(const Moments& other);
 };
 
 struct ResidenceDistribution
 {
+    static constexpr int batchesPerHalf = 4;
     std::vector<double> counts; // per bin
     Moments all;
-    std::array<Moments, 2> halves;
+    // the first half's batches, then the second's
+    std::array<Moments, 2 * batchesPerHalf> batches;
+
+    Moments half(int h) const; // h = 0, 1: the sum of its batches
 };
 
 class CirculationStatistics
@@ -217,6 +226,10 @@ public:
     std::vector<double> pack(std::size_t bins = 0, bool countsSampleTimes = true) const;
     std::size_t bins() const;
     void unpack(const std::vector<double>& packed); // throws std::invalid_argument on a size mismatch
+    // A pack written before the halves had batches (each distribution's
+    // moments: all, first half, second half) in today's layout, each half's
+    // moments in its first batch
+    static std::vector<double> withoutBatchesUpgraded(const std::vector<double>& packed);
     void add(const std::vector<double>& packed);
     void clear();
 

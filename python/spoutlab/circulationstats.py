@@ -81,6 +81,14 @@ def check_schema(stats, path='circulation.json'):
             _need(stats['halves'], [half], path + ': halves')
             _need(stats['halves'][half].get(key), ['samples', 'mean', 'std'],
                   '%s: halves/%s/%s' % (path, half, key))
+            if 'batches' in stats:
+                where = '%s: batches/%s/%s' % (path, half, key)
+                b = stats['batches'].get(half, {}).get(key)
+                _need(b, ['samples', 'sum'], where)
+                if len(b['samples']) != len(b['sum']) or len(b['samples']) < 2 \
+                        or sum(b['samples']) != stats['halves'][half][key]['samples']:
+                    raise SchemaError('%s: samples and sum, two or more each, the samples '
+                                      "adding up to the half's" % where)
     for region in REGIONS:
         _need(stats['conditions'].get(region), CONDITION_KEYS, '%s: conditions/%s' % (path, region))
     _need(stats['gas'], ['inletMassFlow', 'spoutShare', 'downcomerShare'], path + ': gas')
@@ -185,15 +193,41 @@ def littles_mean(stats, key):
     return holdup / entries if entries > 0 else None
 
 
+def batch_error(batches):
+    """The standard error of a half's mean residence from its batches
+    ({'samples': [N_j], 'sum': [S_j]}, equal lengths of time): the mean is
+    the ratio R = sum S_j / sum N_j, and the scatter of the batches about it
+    gives var R = m / (m - 1) sum (S_j - R N_j)^2 / (sum N_j)^2 over the m
+    batches.  Visits that move together (a slug through the spout) fall in
+    one batch, so unlike the error of independent visits this one counts
+    them, as long as a batch outlasts such a correlation.  None with fewer
+    than two batches holding visits."""
+    n, s = batches['samples'], batches['sum']
+    total = sum(n)
+    if sum(1 for x in n if x > 0) < 2:
+        return None
+    r = sum(s) / total
+    m = len(n)
+    return math.sqrt(m / (m - 1) * sum((sj - r * nj) ** 2 for sj, nj in zip(s, n))) / total
+
+
 def halves_agreement(stats, key):
-    """(difference of the halves' means, its standard error) [s]: the
-    visits of the halves are independent samples, so the error is
-    sqrt(s1^2/n1 + s2^2/n2); None if a half has fewer than two."""
+    """(difference of the halves' means [s], its standard error [s], how the
+    error was had): 'batches', the batch means of each half (batch_error;
+    a statistics file with batches), else 'visits', the visits taken as
+    independent samples, sqrt(s1^2/n1 + s2^2/n2), which slugs make too
+    small.  None if a half has fewer than two visits, or its batches are
+    too few to give an error."""
     a, b = stats['halves']['first'][key], stats['halves']['second'][key]
     if a['samples'] < 2 or b['samples'] < 2:
         return None
+    if 'batches' in stats:
+        errors = [batch_error(stats['batches'][h][key]) for h in ('first', 'second')]
+        if None in errors:
+            return None
+        return a['mean'] - b['mean'], math.hypot(*errors), 'batches'
     return (a['mean'] - b['mean'],
-            math.sqrt(a['std'] ** 2 / a['samples'] + b['std'] ** 2 / b['samples']))
+            math.sqrt(a['std'] ** 2 / a['samples'] + b['std'] ** 2 / b['samples']), 'visits')
 
 
 def cycle_vs_ws(stats, bed_mass, ws):
@@ -272,8 +306,9 @@ def summarize(case, lines, ws=None, png='circulation.png'):
     for k in DISTRIBUTIONS:
         h = halves_agreement(stats, k)
         if h:
-            lines.append('  halves, %s: means differ by %.3g s, %.1f standard errors'
-                         % (k, h[0], abs(h[0]) / h[1] if h[1] > 0 else float('inf')))
+            lines.append('  halves, %s: means differ by %.3g s, %.1f standard errors (of %s)'
+                         % (k, h[0], abs(h[0]) / h[1] if h[1] > 0 else float('inf'),
+                            'batch means' if h[2] == 'batches' else 'independent visits'))
         else:
             lines.append('  halves, %s: not compared, %d and %d visits ended within the halves '
                          'of %.3g s (its visits outlast a half)'

@@ -475,6 +475,29 @@ void CirculationCoupling::resume()
     while (in.read(reinterpret_cast<char*>(&v), sizeof v)) all.push_back(v);
     try
     {
+        // the file's first value: a tag (negative), or in a file written
+        // before the halves had batches the sampling times (not negative)
+        // (a file of no sampling time, from before the window, loses none)
+        const bool tagged = !all.empty() && all[0] < 0;
+        batchesWhole_ = tagged ? all[0] == batchesTag : !all.empty() && all[0] == 0;
+        if (tagged)
+        {
+            all.erase(all.begin());
+        }
+        else if (all.size() > extraWidth)
+        {
+            std::vector<double> upgraded = CirculationStatistics::withoutBatchesUpgraded
+            (
+                std::vector<double>(all.begin(), all.end() - extraWidth)
+            );
+            upgraded.insert(upgraded.end(), all.end() - extraWidth, all.end());
+            all.swap(upgraded);
+            if (!batchesWhole_)
+            {
+                Foam::Info<< "Circulation: " << state << " has the halves' moments without "
+                    "their batches; circulation.json will not give batch errors" << Foam::endl;
+            }
+        }
         unpackAll(all);
     }
     catch (const std::exception& e)
@@ -615,7 +638,8 @@ void CirculationCoupling::write
         const Foam::Time& runTime = mesh_.time();
         const std::string state =
             runTime.globalPath()/"DEM"/("restart_" + runTime.timeName() + ".circulation");
-        const std::vector<double> values = packAll();
+        std::vector<double> values = packAll();
+        values.insert(values.begin(), batchesWhole_ ? batchesTag : partBatchesTag);
         std::ofstream out(state, std::ios::binary);
         out.write
         (
@@ -654,16 +678,35 @@ std::string CirculationCoupling::runJson(const CirculationRun& run) const
 
 std::string CirculationCoupling::residenceJson() const
 {
-    std::string all = "{", halves[2] = {"{", "{"};
+    std::string all = "{", halves[2] = {"{", "{"}, batches[2] = {"{", "{"};
     for (int i = 0; i <= CirculationStatistics::cycle; ++i)
     {
         const ResidenceDistribution& d = stats_.residence(i);
         const std::string key = (i ? ",\n    \"" : "\n    \"") + distributionName(i) + "\": ";
         all += key + residenceEntry(d, stats_.binWidth(), censoredEnd_[std::size_t(i)]);
-        for (int h = 0; h < 2; ++h) halves[h] += key + moments(d.halves[h]);
+        for (int h = 0; h < 2; ++h)
+        {
+            halves[h] += key + moments(d.half(h));
+            std::vector<double> samples, sums;
+            for (int b = 0; b < ResidenceDistribution::batchesPerHalf; ++b)
+            {
+                const Moments& m = d.batches[std::size_t(h*ResidenceDistribution::batchesPerHalf + b)];
+                samples.push_back(m.samples);
+                sums.push_back(m.sum);
+            }
+            batches[h] += key + "{\"samples\": " + countList(samples) + ", \"sum\": "
+                + countList(sums) + "}";
+        }
     }
-    return "\"residence\": " + all + "},\n  \"halves\": {\"first\": " + halves[0]
+    std::string j = "\"residence\": " + all + "},\n  \"halves\": {\"first\": " + halves[0]
         + "},\n  \"second\": " + halves[1] + "}}";
+    // a run resumed from statistics without batches has them only in part
+    if (batchesWhole_)
+    {
+        j += ",\n  \"batches\": {\"first\": " + batches[0] + "},\n  \"second\": "
+            + batches[1] + "}}";
+    }
+    return j;
 }
 
 

@@ -88,8 +88,9 @@ def check_run(case, label):
     for k in cs.DISTRIBUTIONS:
         h = cs.halves_agreement(stats, k)
         if h:
-            print('%-58s info %.3g s apart, %.1f standard errors'
-                  % (label + 'halves, ' + k, h[0], abs(h[0]) / h[1] if h[1] else 0))
+            print('%-58s info %.3g s apart, %.1f standard errors (of %s)'
+                  % (label + 'halves, ' + k, h[0], abs(h[0]) / h[1] if h[1] else 0,
+                     'batch means' if h[2] == 'batches' else 'independent visits'))
     return run
 
 

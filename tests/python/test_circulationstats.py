@@ -98,10 +98,34 @@ class Checks(unittest.TestCase):
         stats = made_up()
         stats['halves']['first']['spout'] = {'samples': 4, 'mean': 1.0, 'std': 0.4}
         stats['halves']['second']['spout'] = {'samples': 9, 'mean': 1.5, 'std': 0.6}
-        diff, error = cs.halves_agreement(stats, 'spout')
+        diff, error, how = cs.halves_agreement(stats, 'spout')
         self.assertAlmostEqual(diff, -0.5, places=12)
         self.assertAlmostEqual(error, math.sqrt(0.16 / 4 + 0.36 / 9), places=12)
+        self.assertEqual(how, 'visits')
         self.assertIsNone(cs.halves_agreement(stats, 'cycle'))
+
+    def test_halves_by_batch_means(self):
+        """The first half's batches scatter about its mean 1.0 by -0.4, 0,
+        +0.4, 0 (sums less mean x samples), the second's not at all: the
+        error is sqrt(4/3 x 0.32) / 4 from the first half alone."""
+        stats = made_up()
+        stats['halves']['first']['spout'] = {'samples': 4, 'mean': 1.0, 'std': 0.4}
+        stats['halves']['second']['spout'] = {'samples': 9, 'mean': 1.5, 'std': 0.6}
+        stats['batches'] = {h: {k: {'samples': [0] * 4, 'sum': [0] * 4} for k in cs.DISTRIBUTIONS}
+                            for h in ('first', 'second')}
+        stats['batches']['first']['spout'] = {'samples': [1, 1, 1, 1], 'sum': [0.6, 1.0, 1.4, 1.0]}
+        stats['batches']['second']['spout'] = {'samples': [2, 3, 2, 2], 'sum': [3, 4.5, 3, 3]}
+        cs.check_schema(stats, 'made-up')
+        diff, error, how = cs.halves_agreement(stats, 'spout')
+        self.assertAlmostEqual(diff, -0.5, places=12)
+        self.assertAlmostEqual(error, math.sqrt(4 / 3 * 0.32) / 4, places=12)
+        self.assertEqual(how, 'batches')
+        # visits in one batch only give no error
+        stats['batches']['first']['spout'] = {'samples': [0, 4, 0, 0], 'sum': [0, 4, 0, 0]}
+        self.assertIsNone(cs.halves_agreement(stats, 'spout'))
+        stats['batches']['first']['spout'] = {'samples': [1, 1, 1], 'sum': [1, 1, 1]}
+        with self.assertRaisesRegex(cs.SchemaError, 'batches/first/spout'):
+            cs.check_schema(stats, 'made-up')
 
     def test_cycle_vs_ws(self):
         stats = copy.deepcopy(made_up())

@@ -334,12 +334,72 @@ TEST(CirculationStatistics, HistogramBinsAndHalves)
     EXPECT_EQ(f.counts[1], 2);
     EXPECT_EQ(f.counts[2], 1);
     EXPECT_EQ(f.counts[3], 1);
-    EXPECT_EQ(f.halves[0].samples, 2);
-    EXPECT_EQ(f.halves[1].samples, 2);
-    EXPECT_NEAR(f.halves[0].mean(), 0.075, 1e-12);
-    EXPECT_NEAR(f.halves[1].mean(), 0.275, 1e-12);
+    EXPECT_EQ(f.half(0).samples, 2);
+    EXPECT_EQ(f.half(1).samples, 2);
+    EXPECT_NEAR(f.half(0).mean(), 0.075, 1e-12);
+    EXPECT_NEAR(f.half(1).mean(), 0.275, 1e-12);
     // sample standard deviation of 0.25 and 0.3: 0.05/sqrt(2)
-    EXPECT_NEAR(f.halves[1].std(), 0.05 / std::sqrt(2.0), 1e-12);
+    EXPECT_NEAR(f.half(1).std(), 0.05 / std::sqrt(2.0), 1e-12);
+    // the halves of 2 s in batches of 0.5 s, a visit in the one it ends in:
+    // 0.1 and 0.65 s in the first half's first two, 2.3 s in the second
+    // half's first, 3.35 s in its third
+    const std::vector<double> batchSamples = {1, 1, 0, 0, 1, 0, 1, 0};
+    for (std::size_t b = 0; b < batchSamples.size(); ++b)
+        EXPECT_EQ(f.batches[b].samples, batchSamples[b]) << b;
+    EXPECT_NEAR(f.batches[6].sum, 0.3, 1e-12);
+}
+
+// A pack written before the halves had batches (all, first half, second
+// half per distribution) unpacks to the same statistics, each half's
+// moments in its first batch.
+TEST(CirculationStatistics, PackWithoutBatchesUpgrades)
+{
+    CirculationStatistics stats(bed, 0.0, 1.0, 0.05);
+    std::vector<double> a = freshTrack(), b = freshTrack();
+    follow(stats, a,
+           repeat(inSpout, 2) + repeat(inFountain, 3) + repeat(inDowncomer, 2) + repeat(inEntrainment, 2)
+               + repeat(inSpout, 3) + repeat(inFountain, 2) + repeat(inDowncomer, 6),
+           0.0, 0.1);
+    follow(stats, b,
+           repeat(inFountain, 14) + repeat(inDowncomer, 1) + repeat(inEntrainment, 1) + repeat(inSpout, 4),
+           0.0, 0.1);
+    // the old layout: the new one with each distribution's batches summed
+    // into its halves
+    const std::vector<double> now = stats.pack();
+    const std::size_t perDistribution = 3 * (1 + 2 * ResidenceDistribution::batchesPerHalf);
+    const std::size_t distributions = CirculationStatistics::cycle + 1;
+    std::size_t momentsAt = now.size() - 1 - distributions * stats.bins() - distributions * perDistribution;
+    std::vector<double> old(now.begin(), now.begin() + long(momentsAt));
+    for (int i = 0; i <= CirculationStatistics::cycle; ++i)
+    {
+        const ResidenceDistribution& d = stats.residence(i);
+        for (const Moments& m : {d.all, d.half(0), d.half(1)})
+            old.insert(old.end(), {m.samples, m.sum, m.sumSquares});
+    }
+    old.insert(old.end(), now.begin() + long(momentsAt + distributions * perDistribution), now.end());
+    CirculationStatistics restored(bed, 0.0, 1.0, 0.05);
+    restored.unpack(CirculationStatistics::withoutBatchesUpgraded(old));
+    for (int i = 0; i <= CirculationStatistics::cycle; ++i)
+    {
+        const ResidenceDistribution &d = stats.residence(i), &r = restored.residence(i);
+        EXPECT_EQ(r.all.sum, d.all.sum) << i;
+        std::vector<double> counts = d.counts;
+        counts.resize(r.counts.size(), 0.0); // packed to the longest histogram
+        EXPECT_EQ(r.counts, counts) << i;
+        for (int h = 0; h < 2; ++h)
+        {
+            EXPECT_EQ(r.half(h).samples, d.half(h).samples) << i;
+            EXPECT_EQ(r.half(h).sumSquares, d.half(h).sumSquares) << i;
+            EXPECT_EQ(r.batches[std::size_t(h * ResidenceDistribution::batchesPerHalf)].samples,
+                      d.half(h).samples);
+        }
+    }
+    EXPECT_GT(stats.residence(fountainRegion).half(0).samples, 0);
+    EXPECT_GT(stats.residence(fountainRegion).half(1).samples, 0);
+    EXPECT_EQ(restored.entries(spoutRegion), stats.entries(spoutRegion));
+    EXPECT_EQ(restored.pack().size(), now.size());
+    EXPECT_THROW(CirculationStatistics::withoutBatchesUpgraded(std::vector<double>(3, 0.0)),
+                 std::invalid_argument);
 }
 
 // What a particle sees is averaged per state over its samples.

@@ -1009,6 +1009,17 @@ def drytime_study(study):
     return rows, keys
 
 
+def halves_error(halves):
+    """How the halves' errors were had (circulationstats.halves_agreement;
+    a dryingTime.json before batches gives pairs, errors of independent
+    visits)."""
+    if any(h and len(h) > 2 and h[2] == 'batches' for _, h in halves):
+        return ('of the batch means of the quarters of each half (visits that move together, '
+                'as in slugs, fall in one batch)')
+    return ('of independent visits (visits that move together, as in slugs, make the true '
+            'error larger)')
+
+
 def cycle_row(st):
     """The cycle check's cell: Little's law's mean cycle against bed mass /
     W_s, Kaplan-Meier's and the completed cycles' beside it (older
@@ -1051,8 +1062,7 @@ def drytime_statistics(label, st):
              ("mean cycle by Little's law (all particles / spout entry rate) against bed "
               'mass / W_s (eq 14)', cycle_row(st), 'within 5 % (issue 24)', settings, wall),
              ("the window's two halves: difference of the mean residences / its standard "
-              'error of independent visits (visits that move together, as in slugs, make '
-              'the true error larger)',
+              'error, ' + halves_error(halves),
               ', '.join('%s %.1f' % (k, abs(h[0]) / h[1]) for k, h in halves if h and h[1] > 0)
               + ''.join('; %s not compared (too few visits end within a half)' % k
                         for k, h in halves if not h),
