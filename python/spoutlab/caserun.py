@@ -25,11 +25,11 @@ settleParticles "$SPOUTLAB_DIR/liggghts_inputs/spoutDraftPlates/in.settle"
         sys.exit('%s: case preparation failed' % who)
 
 
-def last_time(log):
-    """The last 'Time = ' of a solver log, or None."""
+def last_time(log, since=0):
+    """The last 'Time = ' of a solver log (after byte `since`), or None."""
     try:
         with open(log, 'rb') as f:
-            f.seek(max(0, os.path.getsize(log) - 20000))
+            f.seek(max(since, os.path.getsize(log) - 20000))
             lines = f.read().decode(errors='replace').splitlines()
     except OSError:
         return None
@@ -49,15 +49,21 @@ def run_spoutfoam(end, ranks, who):
                                '&& decomposeSlabs %d' % ranks])
     # the one launch, etc/caseFunctions launchSpoutFoam
     cmd = ['bash', '-c', '. "$SPOUTLAB_DIR/etc/caseFunctions" && launchSpoutFoam %d' % ranks]
-    start = last_time('log.spoutFoam') or 0.0
+    # the rate from the first time step this launch logs: a run killed
+    # after its last write logged times it now goes back over
+    before = os.path.getsize('log.spoutFoam') if os.path.exists('log.spoutFoam') else 0
     log = open('log.spoutFoam', 'a')
     proc = subprocess.Popen(cmd, stdout=log, stderr=subprocess.STDOUT)
-    t0 = time.time()
+    first = None
     while proc.poll() is None:
         time.sleep(10)
-        now = last_time('log.spoutFoam')
-        if now:
-            rate = (time.time() - t0) / max(now - start, 1e-9)
+        now = last_time('log.spoutFoam', before)
+        if now is None:
+            continue
+        if first is None:
+            first = (time.time(), now)
+        elif now > first[1]:
+            rate = (time.time() - first[0]) / (now - first[1])
             print('%s: t = %.2f of %.2f s, %.0f s wall per simulated s, about %.0f min left'
                   % (who, now, end, rate, (end - now) * rate / 60), flush=True)
     if proc.returncode != 0:
