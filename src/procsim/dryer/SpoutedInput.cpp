@@ -74,6 +74,30 @@ long readCounts(const YamlInput& r, Residence& res)
     return sum;
 }
 
+// The visits open at the window's end (open) into res, by Kaplan-Meier with
+// the tail past the window whose mean makes the whole mean Little's: holdup
+// of `states` / entry rate into `entering`.
+void censorByLittle(Residence& res, const Residence& open, const YamlInput& r, const YamlInput& conditions,
+                    const std::vector<std::string>& states, const std::string& entering)
+{
+    double holdup = 0;
+    for (const std::string& s : states) holdup += conditions.child(s).within("holdup", 0, 1e12);
+    const YamlInput into = conditions.child(entering);
+    const double rate = into.within("entryRate", 0, 1e12, "1/s");
+    if (!(rate > 0)) throw into.error("entryRate", "entries per second above 0");
+    // Little's mean is as good as the entry rate, whose count scatters by
+    // its square root
+    const double entries = into.within("entries", 1, 1e15);
+    try
+    {
+        res.censor(open.counts, holdup / rate, holdup / rate / std::sqrt(entries));
+    }
+    catch (const std::invalid_argument& e)
+    {
+        throw r.child("censored").error("counts", std::string(e.what()) + " (a bed not yet stationary?)");
+    }
+}
+
 // Residence r (residence.<key>): its completed visits and, where the file
 // has them, the visits still open at the window's end (censored) by
 // Kaplan-Meier, with the tail past the window from Little's law: holdup /
@@ -126,23 +150,7 @@ Residence readResidence(const YamlInput& r, const YamlInput& conditions,
             throw r.error("mean",
                           "the counts' mean " + formatNumber(res.histogramMean()) + " s within half a bin");
     }
-    if (opened == 0) return res;
-    double holdup = 0;
-    for (const std::string& s : states) holdup += conditions.child(s).within("holdup", 0, 1e12);
-    const YamlInput into = conditions.child(entering);
-    const double rate = into.within("entryRate", 0, 1e12, "1/s");
-    if (!(rate > 0)) throw into.error("entryRate", "entries per second above 0");
-    // Little's mean is as good as the entry rate, whose count scatters by
-    // its square root
-    const double entries = into.within("entries", 1, 1e15);
-    try
-    {
-        res.censor(open.counts, holdup / rate, holdup / rate / std::sqrt(entries));
-    }
-    catch (const std::invalid_argument& e)
-    {
-        throw r.child("censored").error("counts", std::string(e.what()) + " (a bed not yet stationary?)");
-    }
+    if (opened > 0) censorByLittle(res, open, r, conditions, states, entering);
     return res;
 }
 
