@@ -148,7 +148,8 @@ def statistics(o):
     halves = {k: circulationstats.halves_agreement(stats, k)
               for k in circulationstats.DISTRIBUTIONS}
     r = dict(run=work, u_s=o['u'], time=o['time'], average=o['average'],
-             particles=run['particles'], Ws=ws, cycle_vs_Ws_rel=check['cycle']['little'],
+             particles=run['particles'], Ws=ws, Ws_err=circulation.w_s_error(work),
+             cycle_vs_Ws_rel=check['cycle']['little'],
              downcomer_vs_Ws_rel=check['downcomer']['little'], checks=check,
              cycle_expected_s=run['particles'] * run['particleMass'] / ws if ws > 0 else None,
              cycle_little_s=circulationstats.littles_mean(stats, 'cycle'),

@@ -1034,8 +1034,11 @@ def cycle_row(st):
     ended = ('the %d completed cycles %.3g s (%+.1f %%)'
              % (st['visits']['cycle'], st['residence']['cycle'], 100 * c['completed'])
              if st['visits']['cycle'] else 'no cycle ended within the window')
-    return ('%.3g s against %.3g s: %+.1f %%; %s; %s'
-            % (st['cycle_little_s'], st['cycle_expected_s'], 100 * rel, km, ended))
+    # W_s's own error (1 s blocks): the check cannot be finer than it
+    ws = (' (W_s +- %.1f %%)' % (100 * st['Ws_err'] / st['Ws'])
+          if st.get('Ws_err') and st['Ws'] > 0 else '')
+    return ('%.3g s against %.3g s%s: %+.1f %%; %s; %s'
+            % (st['cycle_little_s'], st['cycle_expected_s'], ws, 100 * rel, km, ended))
 
 
 def drytime_statistics(label, st):
@@ -1070,8 +1073,9 @@ def drytime_statistics(label, st):
     keys.append(('drytime.cycle_vs_Ws_rel' + ('' if label == 'u2' else '_' + label),
                  '%.3g' % st['cycle_vs_Ws_rel'], '', '0',
                  ("mean cycle by Little's law / (bed mass / W_s) - 1, W_s of eq 14 %.4g "
-                  'kg/s; ' if 'cycle_little_s' in st else
-                  'mean cycle / (bed mass / W_s) - 1, W_s of eq 14 %.4g kg/s; ') % st['Ws']
+                  'kg/s%s; ' if 'cycle_little_s' in st else
+                  'mean cycle / (bed mass / W_s) - 1, W_s of eq 14 %.4g kg/s%s; ')
+                 % (st['Ws'], ' +- %.2g (1 s blocks)' % st['Ws_err'] if st.get('Ws_err') else '')
                  + settings))
     pngs.append(('dryingTime_circulation_%s.png' % label,
                  'drytime_circulation_%s.png' % label))
