@@ -275,13 +275,16 @@ std::vector<double> CirculationStatistics::pack(std::size_t minBins, bool counts
 namespace
 {
 
-constexpr std::size_t fixedPackSize =
-    2 + 3 * nCirculationRegions + nCirculationRegions * nSampleQuantities
-    + CirculationStatistics::coreStates.size()
-          * (1 + nSampleQuantities + CirculationStatistics::nCoreFractionBins)
-    + (nCirculationRegions + 1) * 3 * (1 + 2 * ResidenceDistribution::batchesPerHalf);
-// the moments a distribution had before the halves had batches
+constexpr std::size_t distributions = nCirculationRegions + 1;
+// the pack up to the distributions' moments
+constexpr std::size_t momentsAt = 2 + 3 * nCirculationRegions + nCirculationRegions * nSampleQuantities
+                                  + CirculationStatistics::coreStates.size()
+                                        * (1 + nSampleQuantities + CirculationStatistics::nCoreFractionBins);
+// a distribution's moments (samples, sum, sum of squares of all, then of
+// each batch), and before the halves had batches (all, first, second half)
+constexpr std::size_t momentsPerDistribution = 3 * (1 + 2 * ResidenceDistribution::batchesPerHalf);
 constexpr std::size_t momentsWithoutBatches = 9;
+constexpr std::size_t fixedPackSize = momentsAt + distributions * momentsPerDistribution;
 
 } // namespace
 
@@ -351,9 +354,6 @@ void CirculationStatistics::unpack(const std::vector<double>& packed)
 
 std::vector<double> CirculationStatistics::withoutBatchesUpgraded(const std::vector<double>& packed)
 {
-    const std::size_t distributions = nCirculationRegions + 1;
-    const std::size_t momentsAt =
-        fixedPackSize - distributions * 3 * (1 + 2 * ResidenceDistribution::batchesPerHalf);
     if (packed.size() < momentsAt + distributions * momentsWithoutBatches + 1)
         throw std::invalid_argument("CirculationStatistics: packed data too short");
     std::vector<double> p(packed.begin(), packed.begin() + long(momentsAt));
